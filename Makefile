@@ -1,0 +1,42 @@
+# Two entry points (see README.md):
+#   make kit   set up, then run the conformance kit
+#   make test  set up, then run the whole test suite
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+PY_OK  := $(VENV)/.installed
+JS_OK  := tools/ksc/node_modules/.installed
+
+.PHONY: setup kit test quick regen check-generated clean
+
+setup: $(PY_OK) $(JS_OK)
+
+$(PY_OK): pyproject.toml constraints.txt
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --disable-pip-version-check -c constraints.txt -e '.[test]'
+	touch $@
+
+$(JS_OK): tools/ksc/package.json tools/ksc/package-lock.json
+	cd tools/ksc && npm ci --no-audit --no-fund --loglevel=error
+	touch $@
+
+regen: setup
+	$(BIN)/python tools/regen.py
+
+check-generated: setup
+	$(BIN)/python tools/regen.py --check
+
+kit: setup
+	$(BIN)/osdkc kit
+
+# The whole suite; hypothesis runs its CI profile (10,000 examples per
+# message type in the differential test).
+test: setup check-generated
+	$(BIN)/pytest -q
+
+# A fast subset for development: no slow property tests, few examples.
+quick: setup
+	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow'
+
+clean:
+	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis

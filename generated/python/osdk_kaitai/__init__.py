@@ -1,0 +1,1 @@
+"""Parsers generated from spec/*.ksy by tools/regen.py. Do not edit."""

@@ -1,0 +1,90 @@
+"""osdkc: the command line of the OPEN protocol conformance kit."""
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Callable, Sequence
+
+PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+
+
+class UsageError(Exception):
+    """A problem with what the user asked for; printed without a traceback."""
+
+
+def _decode(args: argparse.Namespace) -> int:
+    from .decode import run_decode
+
+    return run_decode(args)
+
+
+def _spec_trace(args: argparse.Namespace) -> int:
+    from .trace import run_trace
+
+    return run_trace(args)
+
+
+def _spec_check(args: argparse.Namespace) -> int:
+    from .speccheck import run_spec_check
+
+    return run_spec_check(args)
+
+
+def _kit(args: argparse.Namespace) -> int:
+    from .kit import run_kit
+
+    return run_kit(args)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(
+        prog="osdkc",
+        description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.",
+    )
+    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+
+    d = sub.add_parser("decode", help="find and decode frames in a byte stream, one JSON object per line")
+    d.add_argument("--profile", required=True, choices=PROFILES, help="broadcast wire profile of the flight controller")
+    src = d.add_mutually_exclusive_group(required=True)
+    src.add_argument("--hex", help="the bytes as hex (spaces and colons allowed)")
+    src.add_argument("file", nargs="?", help="a file of raw bytes, or - for standard input")
+    d.add_argument("--pretty", action="store_true", help="indent each JSON object")
+    d.set_defaults(func=_decode)
+
+    s = sub.add_parser("spec", help="inspect and check the specification")
+    ssub = s.add_subparsers(dest="spec_command", metavar="SPEC_COMMAND")
+    ssub.required = True
+    t = ssub.add_parser("trace", help="map every seed entry to the spec element that carries it")
+    t.add_argument("--json", action="store_true", help="print the table as JSON")
+    t.set_defaults(func=_spec_trace)
+    c = ssub.add_parser("check", help="compile the .ksy files, validate rules and trace, check generated/")
+    c.set_defaults(func=_spec_check)
+
+    k = sub.add_parser("kit", help="run the conformance kit (spec checks and worked examples)")
+    k.set_defaults(func=_kit)
+    return ap
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    ap = build_parser()
+    args = ap.parse_args(argv)
+    func: Callable[[argparse.Namespace], int] = args.func
+    try:
+        return func(args)
+    except UsageError as e:
+        print(f"osdkc: {e}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("osdkc: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        # The reader went away (e.g. `| head`); that is not an error of ours.
+        try:
+            sys.stdout = None  # type: ignore[assignment]
+        finally:
+            return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
