@@ -2,14 +2,13 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from typing import Callable, Sequence
 
+from .errors import UsageError
+
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
-
-
-class UsageError(Exception):
-    """A problem with what the user asked for; printed without a traceback."""
 
 
 def _decode(args: argparse.Namespace) -> int:
@@ -79,11 +78,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("osdkc: interrupted", file=sys.stderr)
         return 130
     except BrokenPipeError:
-        # The reader went away (e.g. `| head`); that is not an error of ours.
-        try:
-            sys.stdout = None  # type: ignore[assignment]
-        finally:
-            return 0
+        # The reader went away (e.g. `| head`): not an error of ours. Point
+        # stdout at /dev/null so the interpreter's final flush stays quiet.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":

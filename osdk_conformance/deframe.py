@@ -72,6 +72,19 @@ def header_problem(header: bytes) -> tuple[str, str] | None:
     return None
 
 
+def header_fields(header: bytes) -> dict:
+    """The header's fields as plain numbers, valid or not: what an error
+    report shows about a frame whose value did not decode."""
+    word = header[1] | header[2] << 8
+    return {
+        "len": word & 0x3FF, "ver": word >> 10,
+        "session": header[3] & 0x1F, "is_ack": bool(header[3] >> 5 & 1), "res0": header[3] >> 6,
+        "padding": header[4] & 0x1F, "enc": header[4] >> 5,
+        "res1": int.from_bytes(header[5:8], "little"),
+        "seq": header[8] | header[9] << 8, "crc16": header[10] | header[11] << 8,
+    }
+
+
 def frame_length(header: bytes) -> int:
     return (header[1] | header[2] << 8) & 0x3FF
 

@@ -71,34 +71,35 @@ def enum_model(value: int, name: str | None) -> dict:
 
 def from_kaitai(obj: Any) -> Any:
     """Model of a Kaitai-generated Python object, using the .ksy files for
-    what the object cannot say (float widths)."""
+    what the object cannot say: float widths, and that a plain int is an
+    enum value the spec has no name for (the runtime leaves those as int)."""
     index = ksy.load()
     return _kaitai_value(obj, index, None)
 
 
-def _kaitai_value(value: Any, index: ksy.KsyIndex, ftype: str | None) -> Any:
+def _kaitai_value(value: Any, index: ksy.KsyIndex, f: ksy.KsyField | None) -> Any:
     from kaitaistruct import KaitaiStruct  # local: only this path needs the runtime
 
     if isinstance(value, KaitaiStruct):
         kt = index.type_for_class(type(value))
         out: dict[str, Any] = {}
-        for name, f in kt.fields.items():
+        for name, sub in kt.fields.items():
             if name in SKIPPED_FIELDS or not hasattr(value, name):
                 continue
-            out[name] = _kaitai_value(getattr(value, name), index, f.type)
+            out[name] = _kaitai_value(getattr(value, name), index, sub)
         return out
     if isinstance(value, list):
-        return [_kaitai_value(v, index, ftype) for v in value]
+        return [_kaitai_value(v, index, f) for v in value]
     if isinstance(value, enum.Enum):
         return enum_model(value.value, value.name)
     if isinstance(value, bool):
         return value
     if isinstance(value, float):
-        if ftype == "f8":
+        if f is not None and f.type == "f8":
             return float_model(f64_bits_of_double(value), 64)
         return float_model(f32_bits_of_double(value), 32)
     if isinstance(value, int):
-        return value
+        return enum_model(value, None) if f is not None and f.enum else value
     if isinstance(value, (bytes, bytearray)):
         return bytes(value).hex()
     raise TypeError(f"no model for {type(value).__name__}")
@@ -121,7 +122,7 @@ def from_construct(value: Any) -> Any:
     if isinstance(value, ListContainer):
         return [from_construct(v) for v in value]
     if isinstance(value, EnumIntegerString):
-        return enum_model(value.int, str(value))
+        return enum_model(int(value), str(value))
     if isinstance(value, EnumInteger):  # a value the enum has no name for
         return enum_model(int(value), None)
     if isinstance(value, bool):

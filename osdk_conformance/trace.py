@@ -25,6 +25,7 @@ from pathlib import Path
 import yaml
 
 from . import ksy
+from .errors import UsageError
 from .paths import SEED, SPEC
 
 TRACE = SPEC / "trace.yaml"
@@ -160,8 +161,6 @@ def _clip(text: str, width: int) -> str:
 
 
 def run_trace(args: argparse.Namespace) -> int:
-    from .cli import UsageError
-
     try:
         report = check()
     except TraceError as e:

@@ -15,8 +15,8 @@ doc: |
   little-endian; bit fields are numbered from the least significant bit.
   This file has no seq of its own: it only provides types and enums.
 doc-ref:
-  - ../shared/seeds/000_b7658b258220b5c1.txt (Flight Data table)
-  - ../shared/reference/PROTOCOL-FACTS.md section 3
+  - osdk-conformance seed shared/seeds/000_b7658b258220b5c1.txt (Flight Data table)
+  - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 3
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/doc/en/Appendix.md
 types:
   time_stamp:
@@ -88,14 +88,14 @@ types:
         type: b4
         doc: |
           Status bits 1-4. The seed calls them reserved; the M100 SDK struct
-          names them the sensor id (see ERRATA). Informative only.
+          names them the sensor id (ERRATA E04). Informative only.
       - id: reserved
         type: b3
         doc: Status bits 5-7, reserved; a receiver ignores them.
   position:
     doc: |
       GPS position and altitude (flag bit 5). Latitude comes first on the
-      wire although the seed's table lists longitude first (see ERRATA).
+      wire although the seed's table lists longitude first (ERRATA E01).
     seq:
       - id: latitude
         type: f8
@@ -287,7 +287,7 @@ enums:
       doc: Onboard embedded system (the onboard SDK device).
   cur_mov_control_mode:
     # Seed's enum is garbled; values from OSDK 3.1.9 doc/en/Appendix.md
-    # (see ERRATA). 1..18 run vertical-major, then horizontal, then yaw.
+    # (ERRATA E02). 1..18 run vertical-major, then horizontal, then yaw.
     0: atti_stop
     1: horiz_ang_vert_vel_yaw_ang
     2: horiz_ang_vert_vel_yaw_rate

@@ -17,14 +17,18 @@ doc: |
   14 documented combinations with their input ranges are in
   rules.yaml (control_modes).
 doc-ref:
-  - ../shared/seeds/000_b7658b258220b5c1.txt (Control mode byte)
-  - ../shared/reference/PROTOCOL-FACTS.md section 4
+  - osdk-conformance seed shared/seeds/000_b7658b258220b5c1.txt (Control mode byte)
+  - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 4
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.9.0/osdk-core/api/inc/dji_control.hpp
 seq:
   - id: stable_mode
     type: b1
     enum: stable_mode
-    doc: Bit 0. Stable mode; it affects horizontal control only.
+    doc: |
+      Bit 0. Stable mode on FW 3.1 profiles; it affects horizontal control
+      only. On m100-fw2.3 the same bit selects the yaw frame (0 ground,
+      1 body) and must be 0 with yaw angle (ERRATA E15, rules.yaml
+      control_mode.bit0_by_profile).
   - id: horizontal_frame
     type: b2
     enum: horizontal_frame

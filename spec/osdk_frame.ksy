@@ -24,7 +24,7 @@ doc: |
   LEN 13 to 15 is impossible (a frame with DATA has at least 12 + 0 + 4 bytes
   and LEN = 16 means an empty DATA with a CRC-32, which is also rejected).
 doc-ref:
-  - ../shared/reference/PROTOCOL-FACTS.md section 1
+  - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 1
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_Codec.cpp
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/doc/en/OPENProtocol.md
 params:
@@ -50,7 +50,11 @@ seq:
     doc: 0 no ACK wanted; 1 ACK wanted, loss tolerated; 2-31 ACK required.
   - id: is_ack
     type: b1
-    doc: true for an ACK frame, false for a command frame.
+    valid:
+      expr: not _ or session != 0
+    doc: |
+      true for an ACK frame, false for a command frame. A session-0 command
+      wants no ACK, so an ACK never has session 0 (ERRATA E24).
   - id: res0
     type: b2
     valid: 0
@@ -62,8 +66,10 @@ seq:
     type: b3
     enum: encryption
     valid:
-      expr: (_ == encryption::plain and padding == 0) or (_ == encryption::aes256 and padding >= 1 and padding <= 16)
-    doc: Encryption of DATA; with plain DATA the padding must be 0.
+      expr: (_ == encryption::plain and padding == 0) or (_ == encryption::aes256 and padding >= 1 and padding <= 16 and len > 16 and (len - 16) % 16 == 0)
+    doc: |
+      Encryption of DATA. Plain DATA has no padding; AES DATA is whole
+      16-byte blocks with 1 to 16 bytes of padding (ERRATA E23).
   - id: res1
     type: b24
     valid: 0

@@ -14,7 +14,7 @@ doc: |
   selects. Ranges per combination and profile are in rules.yaml
   (control_modes).
 doc-ref:
-  - ../shared/reference/PROTOCOL-FACTS.md section 2
+  - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/doc/en/OPENProtocol.md
 seq:
   - id: control_mode

@@ -19,7 +19,7 @@ doc: |
   Values of unknown commands are kept as raw bytes. Bytes left over after a
   known value are an error.
 doc-ref:
-  - ../shared/reference/PROTOCOL-FACTS.md section 2
+  - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2
   - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/doc/en/OPENProtocol.md
 params:
   - id: cmd_set
@@ -48,11 +48,11 @@ seq:
         0x0103: osdk_movement_control
         0x0200: broadcast(profile)
         0x0201: lost_control
-        0x10000: version_ack
-        0x10001: activation_ack
-        0x10010: frequency_ack
-        0x10100: control_ack
-        0x10201: lost_control_ack
+        0x10000: version_ack_value
+        0x10001: activation_ack_value
+        0x10010: frequency_ack_value
+        0x10100: control_ack_value
+        0x10201: lost_control_ack_value
         _: unknown_value
   - id: trailing
     size-eos: true
@@ -70,7 +70,7 @@ types:
       - id: arbitrary
         type: u1
         doc: Any value; the flight controller ignores it.
-  version_ack:
+  version_ack_value:
     doc: ACK of the version query.
     seq:
       - id: ack_code
@@ -98,7 +98,7 @@ types:
       - id: bundle_id
         size: 32
         doc: Bundle id, 32 bytes.
-  activation_ack:
+  activation_ack_value:
     doc: ACK of activation.
     seq:
       - id: ack_code
@@ -117,7 +117,7 @@ types:
         repeat: expr
         repeat-expr: 16
         doc: Frequency code for flag bit 0, 1, ... 15.
-  frequency_ack:
+  frequency_ack_value:
     doc: ACK of set broadcast frequencies.
     seq:
       - id: ack_code
@@ -131,7 +131,7 @@ types:
         type: u1
         enum: control_request_code
         doc: 1 obtain, 0 release.
-  control_ack:
+  control_ack_value:
     doc: ACK of obtain/release control; the first request answers "in progress".
     seq:
       - id: ack_code
@@ -160,7 +160,7 @@ types:
       - id: reason
         type: u1
         doc: Reason code; 0x04 in the documented firmware.
-  lost_control_ack:
+  lost_control_ack_value:
     doc: The device's answer to a lost-control push sent with session > 0.
     seq:
       - id: ack_code

@@ -10,22 +10,30 @@ Modules, one per ksy file or concern:
   floats           F32/F64 (bit-exact IEEE values), F32le/F64le fields
   enums            every ksy enum as name -> value
   bitfields        LSB-first bit fields (ksy bit-endian: le) embedded in records
-  combinators      Call (parametrised ksy types), ExactSize (strict `size:`)
+  combinators      when (ksy if:), Call (parametrised ksy types), ExactSize (size:)
   control          control_mode, movement_control, encode_movement_control
   broadcast_items  the broadcast item types
   broadcast        the three broadcast profiles
   payload          command/ACK values by set, id, direction and profile
   frame            the frame, parse_frame, build_frame
+
+At this level every top-level ksy type is exported under its ksy id; the
+parametrised ones (osdk_payload, osdk_frame) are functions of the ksy params.
 """
-from .broadcast import a3_fw3_1, for_profile as broadcast_for_profile, m100_fw2_3, m100_fw3_1
-from .control import control_mode, encode_movement_control, movement_control
+from .broadcast import a3_fw3_1 as osdk_broadcast_a3_fw3_1
+from .broadcast import for_profile as broadcast_for_profile
+from .broadcast import m100_fw2_3 as osdk_broadcast_m100_fw2_3
+from .broadcast import m100_fw3_1 as osdk_broadcast_m100_fw3_1
+from .control import control_mode as osdk_control_mode
+from .control import encode_movement_control
+from .control import movement_control as osdk_movement_control
 from .floats import F32, F64, F32le, F64le, IeeeFloat
-from .frame import build_frame, frame, frame_data, header, parse_frame
-from .payload import payload
+from .frame import build_frame, osdk_frame, parse_frame
+from .payload import osdk_payload
 
 __all__ = [
+    "osdk_control_mode", "osdk_movement_control",
+    "osdk_broadcast_m100_fw2_3", "osdk_broadcast_m100_fw3_1", "osdk_broadcast_a3_fw3_1", "broadcast_for_profile",
+    "osdk_payload", "osdk_frame", "parse_frame", "build_frame", "encode_movement_control",
     "F32", "F64", "F32le", "F64le", "IeeeFloat",
-    "control_mode", "movement_control", "encode_movement_control",
-    "m100_fw2_3", "m100_fw3_1", "a3_fw3_1", "broadcast_for_profile",
-    "payload", "frame", "frame_data", "header", "parse_frame", "build_frame",
 ]

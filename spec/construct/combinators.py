@@ -7,8 +7,8 @@
 - `Call`: a ksy `type: t(a, b)` evaluates the arguments where the field is
   used and instantiates the parametrised type with those values. In this
   package a parametrised type is a Python function returning a Construct
-  (`time_stamp(has_ns_and_sync)`, `payload(cmd_set, cmd_id, is_ack,
-  profile)`); Call evaluates its argument expressions in the current context
+  (`time_stamp(has_ns_and_sync)`, `osdk_payload(cmd_set, cmd_id,
+  is_ack, profile)`); Call evaluates its argument expressions in the current context
   and delegates to what the function returns for them.
 - `ExactSize`: a ksy `size: n` field occupies exactly n bytes. Construct's
   FixedSized parses the same way but pads with zero bytes when the value

@@ -5,10 +5,10 @@ session/ACK/RES0, PADDING/ENC, RES1, SEQ, CRC16), then, unless the frame
 is header-only (LEN = 12), DATA and a CRC32. Plain DATA is decoded (command
 set, id and the value by osdk_payload; or an ACK's raw value); encrypted
 DATA stays ciphertext. The `valid` rules of the ksy hold in both directions:
-VER, RES0, RES1 = 0, LEN = 12 or >= 17, and PADDING = 0 when plain,
-1..16 when AES-256.
+VER, RES0, RES1 = 0, LEN = 12 or >= 17, PADDING = 0 when plain, 1..16
+with whole 16-byte blocks when AES-256, and no ACK in session 0.
 
-Like the Kaitai description, `frame(profile)` does not check the CRCs; it
+Like the Kaitai description, `osdk_frame(profile)` does not check the CRCs; it
 reads and writes them as plain integers, so a test can build a frame with a
 wrong CRC on purpose. `build_frame` is the encoder for correct frames: it
 computes LEN and both CRCs (osdk_conformance.crc, parameters from
@@ -29,9 +29,11 @@ from osdk_conformance.crc import crc16, crc32
 from .bitfields import lsb_first, record
 from .combinators import Call, ExactSize, when
 from .enums import COMMAND_SET, ENCRYPTION, enum_int, profile_value
-from .payload import payload
+from .payload import osdk_payload
 
-__all__ = ["HEADER_LEN", "CRC32_LEN", "MAX_LEN", "header", "frame", "frame_data", "parse_frame", "build_frame"]
+__all__ = [
+    "HEADER_LEN", "CRC32_LEN", "MAX_LEN", "header", "osdk_frame", "frame", "frame_data", "parse_frame", "build_frame",
+]
 
 HEADER_LEN = 12
 CRC32_LEN = 4
@@ -43,10 +45,18 @@ def _len_valid(this) -> bool:
 
 
 def _enc_valid(this) -> bool:
+    # ERRATA E23: plain DATA has no padding; AES DATA is whole 16-byte
+    # blocks and PADDING is 1..16.
     enc = enum_int(this.enc, ENCRYPTION)
     if enc == ENCRYPTION["plain"]:
         return this.padding == 0
-    return enc == ENCRYPTION["aes256"] and 1 <= this.padding <= 16
+    return (enc == ENCRYPTION["aes256"] and 1 <= this.padding <= 16
+            and this.len > HEADER_LEN + CRC32_LEN and (this.len - HEADER_LEN - CRC32_LEN) % 16 == 0)
+
+
+def _session_valid(this) -> bool:
+    # ERRATA E24: a session-0 command wants no ACK, so no ACK is in session 0.
+    return not this.is_ack or this.session != 0
 
 
 _sof = "sof" / Const(b"\xaa")
@@ -60,7 +70,9 @@ _header_bits = lsb_first(
     "padding" / BitsInteger(5),
     "enc" / Enum(BitsInteger(3), **ENCRYPTION),
     "res1" / Const(0, BitsInteger(24)),
-    checks=(Check(_len_valid), Check(_enc_valid)),
+    # Named so that a failure's path says which rule failed.
+    checks=("_valid_len" / Check(_len_valid), "_valid_enc" / Check(_enc_valid),
+            "_valid_session" / Check(_session_valid)),
 )
 
 _crc16_covered = record(_sof, _header_bits, "seq" / Int16ul)
@@ -84,7 +96,7 @@ def frame_data(profile: int):
     return Struct(
         "cmd_set" / when(_is_command, Enum(Int8ul, **COMMAND_SET)),
         "cmd_id" / when(_is_command, Int8ul),
-        "value" / when(_is_command, Call(payload, this.cmd_set, this.cmd_id, False, profile)),
+        "value" / when(_is_command, Call(osdk_payload, this.cmd_set, this.cmd_id, False, profile)),
         "ack_value" / when(_is_ack, GreedyBytes),
     )
 
@@ -113,15 +125,19 @@ def _frame(profile: int):
     )
 
 
-def frame(profile):
+def osdk_frame(profile):
     """osdk_frame(profile): profile as value, ksy name or profile id."""
     return _frame(profile_value(profile))
+
+
+frame = osdk_frame
+"""Short name within this module (osdk_construct.frame.frame)."""
 
 
 def parse_frame(data: bytes, profile):
     """Parse one frame from the start of `data` (bytes after it are ignored,
     as a stream parser would leave them for the next frame)."""
-    return frame(profile).parse(data)
+    return osdk_frame(profile).parse(data)
 
 
 def build_frame(*, cmd_set=None, cmd_id=None, value: bytes = b"", is_ack: bool = False,

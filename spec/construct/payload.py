@@ -1,6 +1,6 @@
 """Command and ACK values, chosen by command set, id, direction and profile.
 
-Mirrors spec/osdk_payload.ksy. `payload(cmd_set, cmd_id, is_ack, profile)`
+Mirrors spec/osdk_payload.ksy. `osdk_payload(cmd_set, cmd_id, is_ack, profile)`
 is that ksy type with its params: the dispatch key is
 (is_ack ? 0x10000 : 0) + cmd_set * 0x100 + cmd_id, as in the ksy; a key
 with no type keeps the value as raw bytes (`unknown_value`); bytes left
@@ -21,15 +21,15 @@ from .enums import (
 )
 
 __all__ = [
-    "payload", "key", "BODY_BY_KEY",
-    "version_query", "version_ack", "activation_request", "activation_ack", "frequency_request",
-    "frequency_ack", "control_request", "control_ack", "broadcast", "lost_control",
-    "lost_control_ack", "unknown_value",
+    "osdk_payload", "payload", "key", "BODY_BY_KEY",
+    "version_query", "version_ack_value", "activation_request", "activation_ack_value", "frequency_request",
+    "frequency_ack_value", "control_request", "control_ack_value", "broadcast", "lost_control",
+    "lost_control_ack_value", "unknown_value",
 ]
 
 version_query = Struct("arbitrary" / Int8ul)
 
-version_ack = Struct(
+version_ack_value = Struct(
     "ack_code" / Enum(Int16ul, **VERSION_ACK),
     "version_crc" / Int32ul,
     "version_name" / Bytes(32),
@@ -42,19 +42,19 @@ activation_request = Struct(
     "bundle_id" / Bytes(32),
 )
 
-activation_ack = Struct("ack_code" / Enum(Int16ul, **ACTIVATION_RESULT))
+activation_ack_value = Struct("ack_code" / Enum(Int16ul, **ACTIVATION_RESULT))
 
 frequency_request = Struct("codes" / Array(16, Enum(Int8ul, **FREQUENCY_CODE)))
 
-frequency_ack = Struct("ack_code" / Enum(Int16ul, **FREQUENCY_ACK))
+frequency_ack_value = Struct("ack_code" / Enum(Int16ul, **FREQUENCY_ACK))
 
 control_request = Struct("request" / Enum(Int8ul, **CONTROL_REQUEST_CODE))
 
-control_ack = Struct("ack_code" / Enum(Int16ul, **CONTROL_ACK))
+control_ack_value = Struct("ack_code" / Enum(Int16ul, **CONTROL_ACK))
 
 lost_control = Struct("reason" / Int8ul)
 
-lost_control_ack = Struct("ack_code" / Int16ul)
+lost_control_ack_value = Struct("ack_code" / Int16ul)
 
 unknown_value = Struct("raw" / GreedyBytes)
 
@@ -83,11 +83,11 @@ BODY_BY_KEY = {
     0x0103: movement_control,
     0x0200: broadcast,  # needs the profile
     0x0201: lost_control,
-    0x10000: version_ack,
-    0x10001: activation_ack,
-    0x10010: frequency_ack,
-    0x10100: control_ack,
-    0x10201: lost_control_ack,
+    0x10000: version_ack_value,
+    0x10001: activation_ack_value,
+    0x10010: frequency_ack_value,
+    0x10100: control_ack_value,
+    0x10201: lost_control_ack_value,
 }
 """Value type by dispatch key; any other key is `unknown_value`."""
 
@@ -100,8 +100,12 @@ def _payload(k: int, profile: int):
     return Struct("body" / body, Terminated)
 
 
-def payload(cmd_set, cmd_id: int, is_ack: bool, profile):
+def osdk_payload(cmd_set, cmd_id: int, is_ack: bool, profile):
     """osdk_payload(cmd_set, cmd_id, is_ack, profile): the construct of one
     value. cmd_set may be an int or a command_set enum value; profile an int,
     ksy name or profile id."""
     return _payload(key(enum_int(cmd_set, COMMAND_SET), int(cmd_id), bool(is_ack)), profile_value(profile))
+
+
+payload = osdk_payload
+"""Short name within this module (osdk_construct.payload.payload)."""

@@ -15,11 +15,11 @@ class OsdkBroadcastA3Fw31(KaitaiStruct):
     flag-bit order, each only when its bit is set. This profile uses
     the 9-byte time stamp, the GPS and RTK detail items at bits 6 and 7, the 13-byte gimbal item and the 2-byte control info item.
     A flag word that promises more bytes than the payload holds is an error
-    (the DJI SDK reads past the end instead; see ERRATA), and so are set
+    (the DJI SDK reads past the end instead; spec/ERRATA.md E25), and so are set
     reserved flag bits and bytes left over after the last item.
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 3 (profile a3-fw3.1)
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 3 (profile a3-fw3.1)
     
     
     .. seealso::

@@ -19,11 +19,11 @@ class OsdkBroadcastItems(KaitaiStruct):
     This file has no seq of its own: it only provides types and enums.
     
     .. seealso::
-       ../shared/seeds/000_b7658b258220b5c1.txt (Flight Data table)
+       osdk-conformance seed shared/seeds/000_b7658b258220b5c1.txt (Flight Data table)
     
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 3
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 3
     
     
     .. seealso::
@@ -192,7 +192,7 @@ class OsdkBroadcastItems(KaitaiStruct):
 
     class Position(KaitaiStruct):
         """GPS position and altitude (flag bit 5). Latitude comes first on the
-        wire although the seed's table lists longitude first (see ERRATA).
+        wire although the seed's table lists longitude first (ERRATA E01).
         """
         def __init__(self, _io, _parent=None, _root=None):
             super(OsdkBroadcastItems.Position, self).__init__(_io)

@@ -21,11 +21,11 @@ class OsdkControlMode(KaitaiStruct):
     rules.yaml (control_modes).
     
     .. seealso::
-       ../shared/seeds/000_b7658b258220b5c1.txt (Control mode byte)
+       osdk-conformance seed shared/seeds/000_b7658b258220b5c1.txt (Control mode byte)
     
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 4
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 4
     
     
     .. seealso::

@@ -27,7 +27,7 @@ class OsdkFrame(KaitaiStruct):
     and LEN = 16 means an empty DATA with a CRC-32, which is also rejected).
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 1
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 1
     
     
     .. seealso::
@@ -66,13 +66,16 @@ class OsdkFrame(KaitaiStruct):
             raise kaitaistruct.ValidationNotEqualError(0, self.ver, self._io, u"/seq/2")
         self.session = self._io.read_bits_int_le(5)
         self.is_ack = self._io.read_bits_int_le(1) != 0
+        _ = self.is_ack
+        if not  (((not (_))) or (self.session != 0)) :
+            raise kaitaistruct.ValidationExprError(self.is_ack, self._io, u"/seq/4")
         self.res0 = self._io.read_bits_int_le(2)
         if not self.res0 == 0:
             raise kaitaistruct.ValidationNotEqualError(0, self.res0, self._io, u"/seq/5")
         self.padding = self._io.read_bits_int_le(5)
         self.enc = KaitaiStream.resolve_enum(OsdkFrame.Encryption, self._io.read_bits_int_le(3))
         _ = self.enc
-        if not  (( ((_ == OsdkFrame.Encryption.plain) and (self.padding == 0)) ) or ( ((_ == OsdkFrame.Encryption.aes256) and (self.padding >= 1) and (self.padding <= 16)) )) :
+        if not  (( ((_ == OsdkFrame.Encryption.plain) and (self.padding == 0)) ) or ( ((_ == OsdkFrame.Encryption.aes256) and (self.padding >= 1) and (self.padding <= 16) and (self.len > 16) and ((self.len - 16) % 16 == 0)) )) :
             raise kaitaistruct.ValidationExprError(self.enc, self._io, u"/seq/7")
         self.res1 = self._io.read_bits_int_le(24)
         if not self.res1 == 0:

@@ -17,7 +17,7 @@ class OsdkMovementControl(KaitaiStruct):
     (control_modes).
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 2
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2
     
     
     .. seealso::

@@ -3,10 +3,10 @@
 
 import kaitaistruct
 from kaitaistruct import KaitaiStruct, KaitaiStream, BytesIO
-from osdk_kaitai import osdk_movement_control
+from osdk_kaitai import osdk_broadcast_m100_fw3_1
 from osdk_kaitai import osdk_broadcast_a3_fw3_1
 from osdk_kaitai import osdk_broadcast_m100_fw2_3
-from osdk_kaitai import osdk_broadcast_m100_fw3_1
+from osdk_kaitai import osdk_movement_control
 from enum import IntEnum
 
 
@@ -23,7 +23,7 @@ class OsdkPayload(KaitaiStruct):
     known value are an error.
     
     .. seealso::
-       ../shared/reference/PROTOCOL-FACTS.md section 2
+       osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2
     
     
     .. seealso::
@@ -110,19 +110,19 @@ class OsdkPayload(KaitaiStruct):
             self.body = OsdkPayload.LostControl(self._io, self, self._root)
         elif _on == 65536:
             pass
-            self.body = OsdkPayload.VersionAck(self._io, self, self._root)
+            self.body = OsdkPayload.VersionAckValue(self._io, self, self._root)
         elif _on == 65537:
             pass
-            self.body = OsdkPayload.ActivationAck(self._io, self, self._root)
+            self.body = OsdkPayload.ActivationAckValue(self._io, self, self._root)
         elif _on == 65552:
             pass
-            self.body = OsdkPayload.FrequencyAck(self._io, self, self._root)
+            self.body = OsdkPayload.FrequencyAckValue(self._io, self, self._root)
         elif _on == 65792:
             pass
-            self.body = OsdkPayload.ControlAck(self._io, self, self._root)
+            self.body = OsdkPayload.ControlAckValue(self._io, self, self._root)
         elif _on == 66049:
             pass
-            self.body = OsdkPayload.LostControlAck(self._io, self, self._root)
+            self.body = OsdkPayload.LostControlAckValue(self._io, self, self._root)
         else:
             pass
             self.body = OsdkPayload.UnknownValue(self._io, self, self._root)
@@ -175,10 +175,10 @@ class OsdkPayload(KaitaiStruct):
             pass
             self.body._fetch_instances()
 
-    class ActivationAck(KaitaiStruct):
+    class ActivationAckValue(KaitaiStruct):
         """ACK of activation."""
         def __init__(self, _io, _parent=None, _root=None):
-            super(OsdkPayload.ActivationAck, self).__init__(_io)
+            super(OsdkPayload.ActivationAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
             self._read()
@@ -246,10 +246,10 @@ class OsdkPayload(KaitaiStruct):
                 self.data._fetch_instances()
 
 
-    class ControlAck(KaitaiStruct):
+    class ControlAckValue(KaitaiStruct):
         """ACK of obtain/release control; the first request answers "in progress"."""
         def __init__(self, _io, _parent=None, _root=None):
-            super(OsdkPayload.ControlAck, self).__init__(_io)
+            super(OsdkPayload.ControlAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
             self._read()
@@ -278,10 +278,10 @@ class OsdkPayload(KaitaiStruct):
             pass
 
 
-    class FrequencyAck(KaitaiStruct):
+    class FrequencyAckValue(KaitaiStruct):
         """ACK of set broadcast frequencies."""
         def __init__(self, _io, _parent=None, _root=None):
-            super(OsdkPayload.FrequencyAck, self).__init__(_io)
+            super(OsdkPayload.FrequencyAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
             self._read()
@@ -335,10 +335,10 @@ class OsdkPayload(KaitaiStruct):
             pass
 
 
-    class LostControlAck(KaitaiStruct):
+    class LostControlAckValue(KaitaiStruct):
         """The device's answer to a lost-control push sent with session > 0."""
         def __init__(self, _io, _parent=None, _root=None):
-            super(OsdkPayload.LostControlAck, self).__init__(_io)
+            super(OsdkPayload.LostControlAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
             self._read()
@@ -367,10 +367,10 @@ class OsdkPayload(KaitaiStruct):
             pass
 
 
-    class VersionAck(KaitaiStruct):
+    class VersionAckValue(KaitaiStruct):
         """ACK of the version query."""
         def __init__(self, _io, _parent=None, _root=None):
-            super(OsdkPayload.VersionAck, self).__init__(_io)
+            super(OsdkPayload.VersionAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
             self._read()

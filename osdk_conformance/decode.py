@@ -1,0 +1,179 @@
+"""`osdkc decode`: frames and errors in a byte stream, as JSON lines.
+
+Deframing follows the SDK receiver (deframe.py); each intact frame is then
+decoded with the Construct spec for the chosen profile and printed in the
+JSON value model (docs/VALUE-MODEL.md). ACK values are decoded when the
+same stream carried the command they answer (matched by SEQ and session).
+"""
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+from typing import IO, Any, Iterable, Iterator
+
+import construct
+
+from . import model
+from .errors import UsageError
+from .deframe import Frame, Garbage, Rejected, deframe, header_fields
+
+READ_SIZE = 64 * 1024
+
+# Command names by (set, id); the value types are in osdk_payload.ksy.
+COMMANDS = {
+    (0x00, 0x00): "version_query",
+    (0x00, 0x01): "activation",
+    (0x00, 0x10): "set_frequency",
+    (0x01, 0x00): "control_authority",
+    (0x01, 0x03): "movement_control",
+    (0x02, 0x00): "broadcast",
+    (0x02, 0x01): "lost_control",
+}
+
+# Which spec rule a failed check enforces, by the name of the field it guards.
+FIELD_ERRORS = {
+    "ver": "bad_version",
+    "res0": "reserved_bits",
+    "res1": "reserved_bits",
+    "reserved_flags": "reserved_bits",
+    "len": "impossible_length",
+    "enc": "bad_encryption",
+    "padding": "bad_encryption",
+    "is_ack": "bad_session",
+    "session": "bad_session",
+}
+
+
+def classify(exc: construct.ConstructError) -> str:
+    """The error class (docs/VALUE-MODEL.md) of a Construct parse failure."""
+    if isinstance(exc, construct.StreamError):
+        return "truncated_payload"
+    if isinstance(exc, construct.TerminatedError):
+        return "length_mismatch"
+    path = getattr(exc, "path", None) or ""
+    names = re.findall(r"[a-z_][a-z0-9_]*", path.split("->")[-1]) if path else []
+    for name in reversed(names):
+        name = name.removeprefix("_valid_")  # osdk_construct's named checks
+        if name in FIELD_ERRORS:
+            return FIELD_ERRORS[name]
+    text = str(exc)
+    for name, cls in FIELD_ERRORS.items():
+        if re.search(rf"\b{name}\b", text):
+            return cls
+    return "undecodable"
+
+
+class Decoder:
+    def __init__(self, profile: str) -> None:
+        from osdk_construct.frame import parse_frame
+        from osdk_construct.payload import payload
+
+        self._parse_frame = parse_frame
+        self._payload = payload
+        self.profile = profile
+        self._pending: dict[tuple[int, int], tuple[int, int]] = {}  # (session, seq) -> (set, id)
+
+    def event(self, ev: Frame | Rejected | Garbage) -> dict:
+        if isinstance(ev, Garbage):
+            return {"offset": ev.offset, "kind": "garbage", "length": ev.length}
+        if isinstance(ev, Rejected):
+            return {"offset": ev.offset, "kind": "error", "error": ev.error, "detail": ev.detail, "length": ev.length}
+        try:
+            return self._frame(ev)
+        except Exception as e:  # a bug of ours must not cost the user the rest of the stream
+            return {"offset": ev.offset, "kind": "error", "error": "undecodable",
+                    "detail": f"internal error ({type(e).__name__}: {_one_line(e)}); please report it with this frame",
+                    "length": len(ev.raw), "raw": ev.raw.hex()}
+
+    def _frame(self, ev: Frame) -> dict:
+        try:
+            parsed = self._parse_frame(ev.raw, self.profile)
+        except construct.ConstructError as e:
+            return {"offset": ev.offset, "kind": "error", "error": classify(e),
+                    "detail": _one_line(e), "length": len(ev.raw), "frame_header": header_fields(ev.raw)}
+        out: dict[str, Any] = {"offset": ev.offset, "kind": "frame"}
+        frame = model.from_construct(parsed)
+        data = parsed.get("data")
+        if parsed.len == 12:
+            out["command"] = "none"
+        elif not isinstance(data, dict):
+            out["command"] = "encrypted"
+        elif parsed.is_ack:
+            key = (parsed.session, parsed.seq)
+            if key in self._pending:
+                cmd = self._pending.pop(key)
+                out["ack_of"] = COMMANDS.get(cmd, "unknown")
+                try:
+                    out["ack"] = model.from_construct(self._payload(*cmd, True, self.profile).parse(data.ack_value))["body"]
+                except construct.ConstructError as e:
+                    return {"offset": ev.offset, "kind": "error", "error": classify(e), "detail": _one_line(e),
+                            "length": len(ev.raw), "frame_header": header_fields(ev.raw), "ack_of": out["ack_of"]}
+            else:
+                out["command"] = "ack"
+        else:
+            cmd = (int(data.cmd_set), data.cmd_id)
+            out["command"] = COMMANDS.get(cmd, "unknown")
+            if parsed.session > 0:
+                self._pending[(parsed.session, parsed.seq)] = cmd
+                if len(self._pending) > 1024:  # bounded: unanswered commands are forgotten
+                    self._pending.pop(next(iter(self._pending)))
+        out["frame"] = frame
+        return out
+
+
+def _one_line(exc: Exception) -> str:
+    return re.sub(r"\s+", " ", str(exc)).strip()
+
+
+def parse_hex(text: str) -> bytes:
+    cleaned = re.sub(r"[\s:,]", "", text)
+    if cleaned.lower().startswith("0x"):
+        cleaned = cleaned[2:]
+    try:
+        return bytes.fromhex(cleaned)
+    except ValueError:
+        raise UsageError("--hex: not a hex string (pairs of 0-9a-f, optionally separated by spaces or colons)") from None
+
+
+def read_chunks(stream: IO[bytes]) -> Iterator[bytes]:
+    while chunk := stream.read(READ_SIZE):
+        yield chunk
+
+
+def decode_events(chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
+    decoder = Decoder(profile)
+    for ev in deframe(chunks):
+        yield decoder.event(ev)
+
+
+def run_decode(args: argparse.Namespace) -> int:
+    if args.hex is not None:
+        source: Iterable[bytes] = [parse_hex(args.hex)]
+        close = None
+    elif args.file == "-":
+        source, close = read_chunks(sys.stdin.buffer), None
+    elif args.file:
+        try:
+            fh = open(args.file, "rb")
+        except OSError as e:
+            raise UsageError(f"cannot read {args.file}: {e.strerror}") from None
+        source, close = read_chunks(fh), fh
+    else:
+        raise UsageError("give --hex HEX, a FILE, or - for standard input")
+    errors = 0
+    indent = 2 if args.pretty else None
+    try:
+        for ev in decode_events(source, args.profile):
+            if ev["kind"] == "error":
+                errors += 1
+            sys.stdout.write(model.dumps(ev, indent=indent) + "\n")
+    except BrokenPipeError:
+        raise
+    except OSError as e:
+        raise UsageError(f"reading failed: {e.strerror or e}") from None
+    finally:
+        if close:
+            close.close()
+    sys.stdout.flush()
+    return 1 if errors else 0

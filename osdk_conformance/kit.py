@@ -1,0 +1,77 @@
+"""`osdkc kit`: the conformance kit's run over what this repository bundles.
+
+Today it checks the specification (spec check) and runs the outside worked
+examples through every bundled implementation: the Construct encoder, the
+Construct decoder behind `osdkc decode`, and the Kaitai-generated parser.
+"""
+from __future__ import annotations
+
+import argparse
+from typing import Callable
+
+from . import model
+from .speccheck import run_spec_check
+from .worked_examples import WORKED_FRAMES, WorkedFrame, lookup
+
+
+def _mismatches(frame_model: dict, wf: WorkedFrame) -> list[str]:
+    out = []
+    for path, want in wf.expect.items():
+        try:
+            got = lookup(frame_model, path)
+        except (KeyError, TypeError):
+            out.append(f"{path}: missing")
+            continue
+        if got != want:
+            out.append(f"{path}: {model.dumps(got)} != {model.dumps(want)}")
+    return out
+
+
+def _construct_encode(wf: WorkedFrame) -> list[str]:
+    from osdk_construct.frame import build_frame
+
+    built = build_frame(**wf.build).hex()
+    return [] if built == wf.hex else [f"built {built}"]
+
+
+def _construct_decode(wf: WorkedFrame) -> list[str]:
+    from .decode import decode_events
+
+    events = list(decode_events([bytes.fromhex(wf.hex)], wf.profile))
+    if len(events) != 1 or events[0]["kind"] != "frame":
+        return [f"decoded to {model.dumps(events)}"]
+    return _mismatches(events[0]["frame"], wf)
+
+
+def _kaitai_decode(wf: WorkedFrame) -> list[str]:
+    from kaitaistruct import BytesIO, KaitaiStream
+    from osdk_kaitai.osdk_frame import OsdkFrame
+    from osdk_kaitai.osdk_payload import OsdkPayload
+
+    profile = OsdkPayload.Profile[wf.profile.replace("-", "_").replace(".", "_")]
+    parsed = OsdkFrame(profile, KaitaiStream(BytesIO(bytes.fromhex(wf.hex))))
+    return _mismatches(model.from_kaitai(parsed), wf)
+
+
+IMPLEMENTATIONS: list[tuple[str, Callable[[WorkedFrame], list[str]]]] = [
+    ("construct encoder", _construct_encode),
+    ("construct decoder", _construct_decode),
+    ("kaitai-python decoder", _kaitai_decode),
+]
+
+
+def run_kit(args: argparse.Namespace | None = None) -> int:
+    print("== specification")
+    failed = 1 if run_spec_check() else 0
+    print("== worked frames (PROTOCOL-FACTS section 1)")
+    passed = 0
+    for wf in WORKED_FRAMES:
+        for name, fn in IMPLEMENTATIONS:
+            problems = fn(wf)
+            print(f"  {'ok  ' if not problems else 'FAIL'}  {name:<22} {wf.name}")
+            for p in problems:
+                print(f"          {p}")
+            passed += not problems
+            failed += bool(problems)
+    print(f"kit: {passed} passed, {failed} failed")
+    return 1 if failed else 0
