@@ -206,20 +206,19 @@ def load_rules(path: str | Path | None = None, schema_path: str | Path | None = 
     validator = _validator(_resolve(schema_path, DEFAULT_SCHEMA_PATH))
     errors = sorted(validator.iter_errors(data), key=lambda e: (list(map(str, e.absolute_path)), e.message))
     if errors:
-        lines = [f"  {_json_path(e.absolute_path)}: {e.message}" for e in errors[:_MAX_REPORTED_ERRORS]]
-        more = len(errors) - len(lines)
-        if more > 0:
-            lines.append(f"  ... and {more} more")
-        raise RulesError(f"rules file {shown} does not match the rules schema:\n" + "\n".join(lines))
-
+        raise RulesError(_listing(f"rules file {shown} does not match the rules schema:",
+                                  [f"{_json_path(e.absolute_path)}: {e.message}" for e in errors]))
     problems = _cross_check(data)
     if problems:
-        lines = [f"  {p}" for p in problems[:_MAX_REPORTED_ERRORS]]
-        more = len(problems) - len(lines)
-        if more > 0:
-            lines.append(f"  ... and {more} more")
-        raise RulesError(f"rules file {shown} is inconsistent:\n" + "\n".join(lines))
+        raise RulesError(_listing(f"rules file {shown} is inconsistent:", problems))
     return Rules(data, rules_path)
+
+
+def _listing(title: str, problems: list[str]) -> str:
+    lines = [f"  {p}" for p in problems[:_MAX_REPORTED_ERRORS]]
+    if len(problems) > len(lines):
+        lines.append(f"  ... and {len(problems) - len(lines)} more")
+    return "\n".join([title, *lines])
 
 
 # --------------------------------------------------------------------------

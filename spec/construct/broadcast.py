@@ -28,52 +28,30 @@ def _profile(bit_order):
     return record(lsb_first(*flags, reserved), *present, Terminated)
 
 
-_FW2_3 = (
-    ("time_stamp", items.time_stamp(False)),
-    ("quaternion", items.quaternion),
-    ("acceleration", items.vector3f),
-    ("velocity", items.velocity),
-    ("angular_rate", items.vector3f),
-    ("position", items.position),
-    ("magnetometer", items.magnetometer),
-    ("rc", items.rc),
-    ("gimbal", items.gimbal(False)),
-    ("flight_status", Int8ul),
-    ("battery", Int8ul),
-    ("control_info", items.control_info(False)),
-)
+def _bit_order(fw3_1: bool, a3: bool):
+    """Items in flag-bit order. The profiles differ in two ways only: FW 3.1
+    uses the long forms of time stamp, gimbal and control info, and the A3
+    family inserts GPS and RTK detail at bits 6 and 7 (PROTOCOL-FACTS §3)."""
+    return (
+        ("time_stamp", items.time_stamp(fw3_1)),
+        ("quaternion", items.quaternion),
+        ("acceleration", items.vector3f),
+        ("velocity", items.velocity),
+        ("angular_rate", items.vector3f),
+        ("position", items.position),
+        *((("gps_detail", items.gps_detail), ("rtk_detail", items.rtk_detail)) if a3 else ()),
+        ("magnetometer", items.magnetometer),
+        ("rc", items.rc),
+        ("gimbal", items.gimbal(fw3_1)),
+        ("flight_status", Int8ul),
+        ("battery", Int8ul),
+        ("control_info", items.control_info(fw3_1)),
+    )
 
-_FW3_1 = (
-    ("time_stamp", items.time_stamp(True)),
-    ("quaternion", items.quaternion),
-    ("acceleration", items.vector3f),
-    ("velocity", items.velocity),
-    ("angular_rate", items.vector3f),
-    ("position", items.position),
-    ("magnetometer", items.magnetometer),
-    ("rc", items.rc),
-    ("gimbal", items.gimbal(True)),
-    ("flight_status", Int8ul),
-    ("battery", Int8ul),
-    ("control_info", items.control_info(True)),
-)
 
-_A3_FW3_1 = (
-    ("time_stamp", items.time_stamp(True)),
-    ("quaternion", items.quaternion),
-    ("acceleration", items.vector3f),
-    ("velocity", items.velocity),
-    ("angular_rate", items.vector3f),
-    ("position", items.position),
-    ("gps_detail", items.gps_detail),
-    ("rtk_detail", items.rtk_detail),
-    ("magnetometer", items.magnetometer),
-    ("rc", items.rc),
-    ("gimbal", items.gimbal(True)),
-    ("flight_status", Int8ul),
-    ("battery", Int8ul),
-    ("control_info", items.control_info(True)),
-)
+_FW2_3 = _bit_order(fw3_1=False, a3=False)
+_FW3_1 = _bit_order(fw3_1=True, a3=False)
+_A3_FW3_1 = _bit_order(fw3_1=True, a3=True)
 
 ITEMS = {0: _FW2_3, 1: _FW3_1, 2: _A3_FW3_1}
 """(item name, item construct) in flag-bit order, by profile value."""
