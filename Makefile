@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 PY_OK  := $(VENV)/.installed
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup kit test quick regen check-generated clean
+.PHONY: setup kit test quick regen check-generated vectors clean
 
 setup: $(PY_OK) $(JS_OK)
 
@@ -26,12 +26,17 @@ regen: setup
 check-generated: setup
 	$(BIN)/python tools/regen.py --check
 
+# Regenerate the golden vectors (vectors/*.json, MANIFEST.json) from the spec.
+vectors: setup
+	$(BIN)/python tools/gen_vectors.py
+
 kit: setup
 	$(BIN)/osdkc kit
 
 # The whole suite; hypothesis runs its CI profile (10,000 examples per
 # message type in the differential test).
 test: setup check-generated
+	$(BIN)/python tools/gen_vectors.py --check
 	$(BIN)/pytest -q
 
 # A fast subset for development: no slow property tests, few examples.

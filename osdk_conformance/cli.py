@@ -35,6 +35,18 @@ def _kit(args: argparse.Namespace) -> int:
     return run_kit(args)
 
 
+def _run(args: argparse.Namespace) -> int:
+    from .runner import run_command
+
+    return run_command(args)
+
+
+def _vectors(args: argparse.Namespace) -> int:
+    from .vectors import run_vectors
+
+    return run_vectors(args)
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="osdkc",
@@ -62,6 +74,32 @@ def build_parser() -> argparse.ArgumentParser:
 
     k = sub.add_parser("kit", help="run the conformance kit (spec checks and worked examples)")
     k.set_defaults(func=_kit)
+
+    from .runner import add_arguments as add_run_arguments
+
+    r = sub.add_parser("run", help="replay the golden vectors against an implementation (conformance/PROTOCOL.md)")
+    add_run_arguments(r, PROFILES)
+    r.set_defaults(func=_run)
+
+    v = sub.add_parser("vectors", help="check the golden vectors and their coverage of the spec")
+    vsub = v.add_subparsers(dest="vectors_command", metavar="VECTORS_COMMAND")
+    vsub.required = True
+    vc = vsub.add_parser("check", help="schema, manifest hashes, unique ids, and every case against the spec")
+    vc.add_argument("--dir", help="the vectors directory (default: vectors/)")
+    vc.add_argument("--no-spec", action="store_true", help="skip re-running the reference on every case")
+    vc.set_defaults(func=_vectors)
+    vv = vsub.add_parser("coverage", help="cases per spec rule and errata entry; fails when one has none")
+    vv.add_argument("--dir", help="the vectors directory (default: vectors/)")
+    vv.set_defaults(func=_vectors)
+
+    from . import fuzz, selftest  # both import only the standard library until they run
+
+    st = sub.add_parser("selftest", help="mutation check: every deliberately broken implementation must fail the vectors")
+    selftest.add_arguments(st)
+    st.set_defaults(func=selftest.run_selftest)
+    fz = sub.add_parser("fuzz", help="differential fuzzing of two or more implementations (hypothesis)")
+    fuzz.add_arguments(fz, PROFILES)
+    fz.set_defaults(func=fuzz.run_fuzz)
     return ap
 
 

@@ -1,8 +1,11 @@
 """`osdkc kit`: the conformance kit's run over what this repository bundles.
 
-Today it checks the specification (spec check) and runs the outside worked
-examples through every bundled implementation: the Construct encoder, the
-Construct decoder behind `osdkc decode`, and the Kaitai-generated parser.
+It checks the specification (spec check), runs the outside worked examples
+through every bundled implementation (the Construct encoder, the Construct
+decoder behind `osdkc decode`, the Kaitai-generated parser), replays every
+golden vector against each bundled implementation with the conformance
+runner (reports in reports/), and proves the suite bites with the mutation
+check.
 """
 from __future__ import annotations
 
@@ -10,6 +13,8 @@ import argparse
 from typing import Callable
 
 from . import model
+from .paths import ROOT
+from .runner import BUNDLED_IMPLS
 from .speccheck import run_spec_check
 from .worked_examples import WORKED_FRAMES, WorkedFrame, lookup
 
@@ -60,6 +65,16 @@ IMPLEMENTATIONS: list[tuple[str, Callable[[WorkedFrame], list[str]]]] = [
 ]
 
 
+REPORTS = ROOT / "reports"
+
+
+def _osdkc(*argv: str) -> int:
+    from .cli import main
+
+    print(f"== osdkc {' '.join(argv)}", flush=True)
+    return main(list(argv))
+
+
 def run_kit(args: argparse.Namespace | None = None) -> int:
     print("== specification")
     failed = 1 if run_spec_check() else 0
@@ -73,5 +88,14 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
                 print(f"          {p}")
             passed += not problems
             failed += bool(problems)
+    REPORTS.mkdir(exist_ok=True)
+    steps = [("run", "--impl", impl, "--no-progress", "--html", str(REPORTS / f"{impl}.html"),
+              "--junit", str(REPORTS / f"{impl}.xml")) for impl in BUNDLED_IMPLS]
+    steps.append(("selftest",))
+    for argv in steps:
+        ok = _osdkc(*argv) == 0
+        passed += ok
+        failed += not ok
+    print(f"reports: {REPORTS}/")
     print(f"kit: {passed} passed, {failed} failed")
     return 1 if failed else 0

@@ -115,8 +115,12 @@ def test_spec_trace_reports_everything_mapped():
     assert "trace: OK, every seed entry is mapped" in proc.stdout.decode()
 
 
-def test_kit_passes():
-    proc = osdkc("kit")
-    out = proc.stdout.decode()
-    assert proc.returncode == 0, out
-    assert "kit: 6 passed, 0 failed" in out
+def test_kit_worked_frames_pass_through_every_bundled_implementation():
+    # The rest of `osdkc kit` (spec check, `osdkc run` per bundled testee,
+    # selftest) is tested where each is defined; running the whole kit here
+    # would run those minutes-long steps twice.
+    from osdk_conformance import kit
+
+    for wf in WORKED_FRAMES:
+        for name, check in kit.IMPLEMENTATIONS:
+            assert check(wf) == [], (name, wf.name)

@@ -1,0 +1,346 @@
+"""`osdkc run`: the conformance runner, its testee supervision and reports.
+
+The bundled implementations must conform with empty failure lists; the
+failure list works protobuf-style; misbehaving testees (tests/testees/)
+are recorded case by case and never stop or hang the run.
+"""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import time
+from pathlib import Path
+from xml.etree import ElementTree as ET
+
+import pytest
+
+from osdk_conformance import report
+from osdk_conformance.report import Result
+from osdk_conformance.runner import read_failure_list
+from osdk_conformance import testee as supervision
+
+HERE = Path(__file__).resolve().parent
+TESTEES = HERE / "testees"
+ROOT = HERE.parent
+
+
+def osdkc(*args: str, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+def command_for(name: str, *extra: str) -> str:
+    return " ".join([sys.executable, str(TESTEES / f"{name}.py"), *extra])
+
+
+@pytest.fixture(scope="module")
+def cases():
+    from osdk_conformance.vectors import load_cases
+
+    return load_cases()
+
+
+def subset(cases, tmp_path: Path, op: str, n: int, name: str = "subset.json") -> tuple[Path, list[str]]:
+    """A vector file with the first `n` cases of operation `op`, and their ids."""
+    chosen = [c for c in cases if c.operation == op][:n]
+    assert len(chosen) == n
+    doc = {"suite": "subset", "description": "test subset", "generator": "tests/test_runner.py",
+           "numberOfTests": n, "notes": {},
+           "testGroups": [{"operation": c.operation, "profile": c.profile, "tests": [{
+               "id": c.id, "category": c.category, "comment": c.comment, "input": c.input,
+               "result": c.result, "expected": c.expected, "flags": list(c.flags)}]} for c in chosen]}
+    path = tmp_path / name
+    path.write_text(json.dumps(doc))
+    return path, [c.id for c in chosen]
+
+
+def junit(path: Path) -> ET.Element:
+    return ET.parse(path).getroot()
+
+
+# ---- the bundled implementations conform ----------------------------------------
+
+@pytest.mark.parametrize("impl", ["construct", "kaitai-python"])
+def test_bundled_implementation_conforms(impl, tmp_path):
+    xml, page = tmp_path / "r.xml", tmp_path / "r.html"
+    t0 = time.monotonic()
+    proc = osdkc("run", "--impl", impl, "--no-progress", "--junit", str(xml), "--html", str(page))
+    took = time.monotonic() - t0
+    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-2000:]
+    assert "CONFORMS" in proc.stdout and "Traceback" not in proc.stderr
+    root = junit(xml)
+    assert root.get("failures") == "0" and root.get("errors") == "0"
+    assert int(root.get("tests")) > 0
+    assert "CONFORMS" in page.read_text()
+    assert took < 120, f"{impl}: {took:.0f} s"
+
+
+# ---- failure list ----------------------------------------------------------------------
+
+def test_a_listed_case_that_passes_fails_the_run(cases, tmp_path):
+    case_id = next(c.id for c in cases if c.operation == "classify_control_mode")
+    flist = tmp_path / "failures.txt"
+    flist.write_text(f"# expected failures\n{case_id}   # listed, but construct passes it\n")
+    # --filter on the full vector set: the listed case and whatever else contains its id.
+    proc = osdkc("run", "--impl", "construct", "--filter", case_id, "--failure-list", str(flist), "--no-progress")
+    assert proc.returncode == 1, proc.stdout
+    assert "remove it from the list" in proc.stdout and case_id in proc.stdout
+
+
+def test_a_failing_testee_passes_with_its_failures_listed(cases, tmp_path):
+    vec, ids = subset(cases, tmp_path, "decode_payload", 5)
+    broken = ids[1:3]
+    cmd = command_for("wrong_answers", *broken)
+    xml, page = tmp_path / "r.xml", tmp_path / "r.html"
+
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+                 "--html", str(page))
+    assert proc.returncode == 1, proc.stdout
+    assert all(i in proc.stdout for i in broken)
+    root = junit(xml)
+    assert root.get("failures") == str(len(broken)) and root.get("tests") == str(len(ids))
+    failed = {tc.get("name") for tc in root.iter("testcase") if tc.find("failure") is not None}
+    assert failed == set(broken)
+    body = next(tc.find("failure").text for tc in root.iter("testcase") if tc.find("failure") is not None)
+    for label in ("hex:", "expected:", "actual:", "flags:"):
+        assert label in body
+    text = page.read_text()
+    assert all(f'id="case-{i}"' in text for i in broken) and "DOES NOT CONFORM" in text
+
+    flist = tmp_path / "failures.txt"
+    flist.write_text("".join(f"{i}\n" for i in broken))
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--failure-list", str(flist),
+                 "--junit", str(xml))
+    assert proc.returncode == 0, proc.stdout
+    assert junit(xml).get("failures") == "0" and "CONFORMS" in proc.stdout
+
+
+def test_unknown_ids_in_the_failure_list_are_errors(cases, tmp_path):
+    vec, _ = subset(cases, tmp_path, "classify_control_mode", 3)
+    flist = tmp_path / "failures.txt"
+    flist.write_text("no.such.case.id\n")
+    xml = tmp_path / "r.xml"
+    proc = osdkc("run", "--impl", "construct", "--vectors", str(vec), "--failure-list", str(flist), "--no-progress",
+                 "--junit", str(xml))
+    assert proc.returncode == 1
+    assert "no.such.case.id" in proc.stdout
+    assert junit(xml).get("errors") == "1"
+
+
+def test_failure_list_syntax(tmp_path):
+    f = tmp_path / "list"
+    f.write_text("# header\n\n  a.b.c  # why\nd.e\n#x.y\na.b.c\n")
+    assert read_failure_list(f) == {"a.b.c": 3, "d.e": 4}
+
+
+# ---- misbehaving testees ---------------------------------------------------------------
+
+@pytest.mark.parametrize("name, kind, extra", [
+    ("sleeper", "testee_timeout", ["--timeout", "0.5"]),
+    ("exit_first", "testee_crash", []),
+    ("garbage", "testee_garbage", []),
+    ("memory_hog", "testee_oom", ["--memory-mb", "256"]),
+])
+def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, name, kind, extra):
+    vec, ids = subset(cases, tmp_path, "decode_frame", 3)
+    xml, page = tmp_path / "r.xml", tmp_path / "r.html"
+    t0 = time.monotonic()
+    proc = osdkc("run", "--testee", command_for(name), "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+                 "--html", str(page), *extra, timeout=120)
+    assert time.monotonic() - t0 < 60
+    assert proc.returncode == 1, proc.stdout + proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert f"{kind} {len(ids)}" in proc.stdout  # e.g. "testee failures: testee_timeout 3"
+    kinds = {tc.get("name"): tc.find("failure").get("type") for tc in junit(xml).iter("testcase")}
+    assert kinds == {i: kind for i in ids}
+    assert all(f'id="case-{i}"' in page.read_text() for i in ids)
+
+
+def test_misbehaving_testee_in_a_filtered_run_of_the_real_vectors(cases):
+    case_id = next(c.id for c in cases if c.operation == "decode_frame")
+    proc = osdkc("run", "--testee", command_for("sleeper"), "--filter", case_id, "--timeout", "0.3", "--no-progress")
+    assert proc.returncode == 1 and "testee_timeout" in proc.stdout
+
+
+def test_a_testee_that_keeps_failing_ends_the_run(cases, tmp_path):
+    vec, ids = subset(cases, tmp_path, "classify_control_mode", 10)
+    xml = tmp_path / "r.xml"
+    proc = osdkc("run", "--testee", command_for("exit_first"), "--vectors", str(vec), "--no-progress",
+                 "--junit", str(xml))
+    assert proc.returncode == 1
+    assert "run aborted" in proc.stdout
+    root = junit(xml)
+    assert root.get("failures") == "6"  # the first failure and five restarts
+    assert root.get("errors") == str(len(ids) - 6)  # not run
+
+
+def test_a_testee_that_does_not_start_is_a_usage_error():
+    proc = osdkc("run", "--testee", "/nonexistent/testee --flag", "--no-progress")
+    assert proc.returncode == 2
+    assert "cannot start testee" in proc.stderr and "Traceback" not in proc.stderr
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--impl", "construct", "--failure-list", "/nonexistent/list"], "cannot read the failure list"),
+    (["--impl", "construct", "--filter", "no case has this in its id"], "no vector matches"),
+    (["--impl", "construct", "--timeout", "0"], "--timeout"),
+    (["--impl", "construct", "--junit", "/nonexistent/dir/r.xml"], "--junit"),
+])
+def test_usage_errors_exit_2_without_traceback(args, message):
+    proc = osdkc("run", *args, "--no-progress")
+    assert proc.returncode == 2, proc.stdout
+    assert message in proc.stderr and "Traceback" not in proc.stderr
+
+
+# ---- supervision in-process -------------------------------------------------------------
+
+def test_testee_restarts_after_a_failure_and_gives_up_after_five():
+    t = supervision.Testee([sys.executable, str(TESTEES / "exit_first.py")])
+    try:
+        assert t.request({"op": "capabilities"})["ok"] is True
+        kinds = []
+        with pytest.raises(supervision.TesteeGaveUp):
+            for _ in range(10):
+                try:
+                    t.request({"op": "decode_frame", "id": "x"})
+                except supervision.TesteeFailure as f:
+                    kinds.append(f.kind)
+                    assert "giving up" in f.stderr
+        assert kinds == ["testee_crash"] * 6
+    finally:
+        t.close()
+    assert not t.running
+
+
+def test_testee_timeout_kills_the_process_group():
+    t = supervision.Testee([sys.executable, str(TESTEES / "sleeper.py")], timeout=0.3)
+    t.request({"op": "capabilities"})
+    pid = t._proc.pid
+    with pytest.raises(supervision.TesteeFailure) as e:
+        t.request({"op": "decode_frame"})
+    assert e.value.kind == "testee_timeout"
+    assert not t.running
+    with pytest.raises(ProcessLookupError):
+        import os
+        os.kill(pid, 0)
+
+
+@pytest.mark.parametrize("obj, ok", [
+    ({"ok": True, "result": {}}, True),
+    ({"ok": False, "error": "bad_crc16", "detail": "x"}, True),
+    ({"ok": False, "unsupported": True}, True),
+    ({"ok": True}, False),
+    ({"ok": False}, False),
+    ({"ok": "yes", "result": {}}, False),
+    ([1, 2], False),
+    ("ok", False),
+])
+def test_response_shapes(obj, ok):
+    assert (supervision.validate_response(obj) is None) == ok
+
+
+# ---- reports ---------------------------------------------------------------------------
+
+def test_reports_escape_everything():
+    nasty = '<script>alert("x")</script> & \x01'
+    results = [
+        Result("cat<1>", "id&1", "fail", nasty, {"hex": "aa", "expected": {"k": nasty}, "flags": ["E01", nasty]},
+               kind="mismatch"),
+        Result("cat<1>", "id2", "pass"),
+        Result("cat2", "id3", "skip", "unsupported"),
+        Result("cat2", "id4", "xfail", "known"),
+        Result("cat2", "id5", "xpass", "remove it"),
+        Result("cat2", "id6", "error", "not run"),
+    ]
+    page = report.html_report(results, "t<itle>")
+    assert "<script>" not in page and "&lt;script&gt;" in page
+    assert "http" not in page.replace('lang="en"', "")  # no external assets
+    root = ET.fromstring(report.junit_xml(results, "suite"))
+    assert root.get("tests") == "6" and root.get("failures") == "2" and root.get("errors") == "1"
+    assert root.get("skipped") == "2"
+    table = report.summary_table(results)
+    assert "cat<1>" in table and "total" in table
+    assert not report.conforms(results)
+    assert report.conforms([r for r in results if r.status in ("pass", "skip", "xfail")])
+
+
+# ---- the README's example testee ------------------------------------------------------------
+
+def test_the_readme_example_testee_conforms(tmp_path):
+    readme = (ROOT / "README.md").read_text()
+    section = readme[readme.index("## Testing your own implementation"):]
+    code = section[section.index("```python\n") + len("```python\n"):section.index("```\n", section.index("```python"))]
+    mine = tmp_path / "mine.py"
+    mine.write_text(code)
+    xml = tmp_path / "r.xml"
+    proc = osdkc("run", "--testee", f"{sys.executable} {mine}", "--no-progress", "--junit", str(xml))
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-2000:]
+    root = junit(xml)
+    ran = [tc for tc in root.iter("testcase") if tc.find("skipped") is None]
+    assert len(ran) >= 256 * 3 and root.get("failures") == "0"  # every mode byte in every profile
+
+
+# ---- the Kaitai testee keeps signalling NaNs bit-exact ---------------------------------------
+
+def _kaitai_testee():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("kaitai_python_testee",
+                                                  ROOT / "conformance" / "testees" / "kaitai_python_testee.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+SNAN32 = (0x7F800001, 0xFFA00000, 0x7FBFFFFF)
+SNAN64 = (0x7FF0000000000001, 0xFFF4000000000000)
+
+
+def _snan_inputs():
+    import struct
+
+    from osdk_construct import build_frame
+
+    mc = bytes([0x4B]) + struct.pack("<4I", SNAN32[0], SNAN32[1], 0x3F800000, SNAN32[2])
+    # a3-fw3.1 broadcast: quaternion (f4 x4) and position (f8, f8, f4, f4, u1)
+    bc = struct.pack("<H", 0b100010) + struct.pack("<4I", *SNAN32, 0x7FC00000) \
+        + struct.pack("<2Q2IB", *SNAN64, SNAN32[0], 0x80000000, 5)
+    return [
+        {"op": "decode_payload", "profile": "a3-fw3.1", "hex": mc.hex(), "cmd_set": 1, "cmd_id": 3, "is_ack": False},
+        {"op": "decode_payload", "profile": "a3-fw3.1", "hex": bc.hex(), "cmd_set": 2, "cmd_id": 0, "is_ack": False},
+        {"op": "decode_frame", "profile": "a3-fw3.1", "hex": build_frame(cmd_set=2, cmd_id=0, value=bc).hex()},
+        {"op": "decode_frame", "profile": "a3-fw3.1", "hex": build_frame(cmd_set=1, cmd_id=3, value=mc).hex()},
+        {"op": "decode_stream", "profile": "a3-fw3.1", "chunks": [7],
+         "hex": (b"\x00" + build_frame(cmd_set=1, cmd_id=3, value=mc) + build_frame(cmd_set=2, cmd_id=0, value=bc)).hex()},
+    ]
+
+
+@pytest.mark.parametrize("req", _snan_inputs(), ids=lambda r: r["op"])
+def test_kaitai_testee_restores_signalling_nan_bits(req):
+    from osdk_conformance.reference import request_answer
+    from osdk_conformance.vectors import Case, compare
+
+    kt = _kaitai_testee()
+    got = json.loads(json.dumps(kt.answer(dict(req))))
+    want = request_answer(dict(req))
+    assert want["ok"] and got["ok"]
+    case = Case("-", req["op"], req["profile"], "snan", "floats", "", {}, "valid", want["result"], ())
+    assert compare(case, got) == (True, "")
+    text = json.dumps(got)
+    assert "0x7f800001" in text and "0x7fc00001" not in text  # the wire's sNaN, not the quieted one
+
+
+def test_kaitai_testee_does_not_use_construct():
+    """Its answers come from the Kaitai-generated parsers, never from osdk_construct."""
+    testee = ROOT / "conformance" / "testees" / "kaitai_python_testee.py"
+    lines = "".join(json.dumps(r) + "\n" for r in [{"op": "capabilities"}, *_snan_inputs()])
+    probe = (f"import sys, io, runpy\n"
+             f"sys.stdin = io.StringIO({lines!r})\n"
+             f"try:\n    runpy.run_path({str(testee)!r}, run_name='__main__')\nexcept SystemExit:\n    pass\n"
+             f"print(sorted(m for m in sys.modules if m.split('.')[0] in ('construct', 'osdk_construct')))\n")
+    proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    out = proc.stdout.splitlines()
+    assert len(out) == 1 + len(_snan_inputs()) + 1 and all(json.loads(x)["ok"] for x in out[:-1])
+    assert out[-1] == "[]"

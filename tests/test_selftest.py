@@ -1,0 +1,124 @@
+"""`osdkc selftest`: the golden vectors kill every mutant of the reference.
+
+One real run of the command (all mutants, the baseline, the real runner and
+child processes) is shared by the tests below; it takes well under a
+minute on two cores.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from osdk_conformance import mutants
+from osdk_conformance.selftest import interleave
+from osdk_conformance.spec_rules import RULES
+from osdk_conformance.trace import errata_ids
+
+ROOT = Path(__file__).resolve().parents[1]
+MUTANT_TESTEE = ROOT / "conformance" / "testees" / "mutant_testee.py"
+
+# The faults the brief of the mutation check names, by our mutant names.
+REQUIRED = {
+    "position_lat_lon_swapped", "magnetometer_5_bytes", "crc16_init_ffff", "crc32_final_xor",
+    "header_reserved_ignored", "version_not_checked", "a3_m100_flag_order", "thrust_0_to_100",
+    "broadcast_no_length_check", "len_13_to_16_accepted", "no_rescan_after_bad_crc32", "bad_header_drops_12",
+    "ack_session0_accepted", "broadcast_trailing_accepted", "reserved_flags_ignored", "fw23_gimbal_limit_byte",
+    "fw31_control_info_1_byte", "yaw_rate_150", "horizontal_0b11_documented", "e15_ignored", "snan_quieted",
+    "neg_zero_normalised", "seq_big_endian", "cur_mov_control_mode_shifted", "encoder_len_without_crc32",
+    "crash_on_aes", "hang_on_empty_read",
+}
+
+
+def osdkc(*args: str, timeout: float = 600) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+@pytest.fixture(scope="module")
+def selftest_run():
+    t0 = time.monotonic()
+    proc = osdkc("selftest")
+    return proc, time.monotonic() - t0
+
+
+def rows(stdout: str) -> dict[str, list[str]]:
+    """mutant name -> its table row split on runs of 2+ spaces."""
+    out = {}
+    for line in stdout.splitlines():
+        cells = re.split(r"\s{2,}", line.strip())
+        if cells and cells[0] in mutants.MUTANTS:
+            out[cells[0]] = cells
+    return out
+
+
+def test_every_mutant_is_killed(selftest_run):
+    proc, took = selftest_run
+    assert proc.returncode == 0, proc.stdout[-6000:] + proc.stderr[-3000:]
+    n = len(mutants.MUTANTS)
+    assert f"mutation score: {n}/{n} killed (100.0%)" in proc.stdout
+    assert "SELFTEST PASSED" in proc.stdout and "Traceback" not in proc.stderr
+    assert re.search(r"baseline \(no fault\): \d+ cases, 0 failing, .*: OK", proc.stdout)
+    table = rows(proc.stdout)
+    assert set(table) == set(mutants.MUTANTS)
+    assert all(cells[1] == "yes" for cells in table.values())
+    assert took < 180, f"selftest took {took:.0f} s"
+
+
+def test_crash_and_hang_are_recorded_as_testee_failures(selftest_run):
+    proc, _ = selftest_run
+    table = rows(proc.stdout)
+    assert "testee_crash" in table["crash_on_aes"][3]
+    assert "testee_timeout" in table["hang_on_empty_read"][3]
+    assert "note:" not in proc.stdout  # every misbehaving mutant died the way it should
+
+
+def test_the_truncation_vectors_kill_the_sdk_style_broadcast_copy(selftest_run):
+    proc, _ = selftest_run
+    first = rows(proc.stdout)["broadcast_no_length_check"][3]
+    assert re.search(r"(short_by_1|truncated|missing|flag_word|broadcast_short)", first), first
+
+
+def test_registry():
+    assert len(mutants.MUTANTS) >= 24
+    assert REQUIRED <= set(mutants.MUTANTS)
+    errata = errata_ids()
+    for m in mutants.MUTANTS.values():
+        assert re.fullmatch(r"[a-z0-9_]+", m.name) and m.name != mutants.NONE
+        assert m.description and "\n" not in m.description
+        assert m.violates, m.name
+        for v in m.violates:
+            assert (v.startswith("rule:") and v[5:] in RULES) or v in errata, (m.name, v)
+        assert m.expect in ("mismatch", "testee_crash", "testee_timeout")
+
+
+def test_interleave_keeps_every_case_once():
+    from osdk_conformance.vectors import load_cases
+
+    cases = load_cases()
+    ordered = interleave(cases)
+    assert sorted(c.id for c in ordered) == sorted(c.id for c in cases)
+    # every (category, operation, profile) group shows up among the first cases
+    groups = {(c.category, c.operation, c.profile) for c in cases}
+    assert {(c.category, c.operation, c.profile) for c in ordered[:len(groups)]} == groups
+
+
+def test_one_mutant_through_osdkc_run():
+    """A mutant testee is an ordinary testee: `osdkc run` says it does not conform."""
+    proc = osdkc("run", "--testee", f"{sys.executable} {MUTANT_TESTEE} position_lat_lon_swapped",
+                 "--filter", "broadcast.a3-fw3.1.single.position", "--no-progress")
+    assert proc.returncode == 1, proc.stdout
+    assert "DOES NOT CONFORM" in proc.stdout and "latitude" in proc.stdout
+
+
+def test_usage_errors():
+    proc = osdkc("selftest", "--mutant", "no_such_mutant", "--no-baseline")
+    assert proc.returncode == 2 and "no mutant" in proc.stderr
+    listing = osdkc("selftest", "--list")
+    assert listing.returncode == 0 and all(name in listing.stdout for name in REQUIRED)
+    bad = subprocess.run([sys.executable, str(MUTANT_TESTEE), "no_such_mutant"], capture_output=True, text=True)
+    assert bad.returncode == 2

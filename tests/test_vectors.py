@@ -1,0 +1,303 @@
+"""The golden vectors: checked, covering every rule and errata entry,
+reproducible, and guarded against tampering; compare() as the runner uses it."""
+from __future__ import annotations
+
+import hashlib
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from osdk_conformance import reference
+from osdk_conformance.paths import ROOT
+from osdk_conformance.spec_rules import RULES
+from osdk_conformance.trace import errata_ids
+from osdk_conformance.vectors import (
+    MANIFEST_NAME, VECTORS_DIR, Case, compare, coverage_counts, load_cases, manifest_text, suite_files,
+)
+
+SMALL_SUITES = ("control_mode", "payloads", "frames", "streams", "encode")
+
+
+def osdkc(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", *args], capture_output=True, text=True,
+                          timeout=600)
+
+
+def small_copy(tmp_path: Path, suites=("payloads",)) -> Path:
+    """A vectors directory holding some of the suites, with a manifest for them."""
+    d = tmp_path / "vectors"
+    d.mkdir()
+    for name in suites:
+        shutil.copy(VECTORS_DIR / f"{name}.json", d)
+    write_manifest(d)
+    return d
+
+
+def write_manifest(d: Path) -> None:
+    hashes = {p.name: hashlib.sha256(p.read_bytes()).hexdigest() for p in suite_files(d)}
+    (d / MANIFEST_NAME).write_text(manifest_text(hashes))
+
+
+@pytest.fixture(scope="module")
+def cases() -> list[Case]:
+    return load_cases()
+
+
+# ------------------------------------------------------------ the checked-in vectors
+
+
+@pytest.mark.slow
+def test_vectors_check_passes():
+    proc = osdkc("vectors", "check")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "vectors check: OK" in proc.stdout
+
+
+def test_vectors_check_passes_on_the_small_suites(tmp_path):
+    proc = osdkc("vectors", "check", "--dir", str(small_copy(tmp_path, SMALL_SUITES)))
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+def test_manifest_lists_every_file_with_its_hash():
+    manifest = json.loads((VECTORS_DIR / MANIFEST_NAME).read_text())
+    assert sorted(manifest) == [p.name for p in suite_files()]
+    for name, digest in manifest.items():
+        assert hashlib.sha256((VECTORS_DIR / name).read_bytes()).hexdigest() == digest, name
+
+
+def test_vectors_coverage_passes():
+    proc = osdkc("vectors", "coverage")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "UNPINNED" not in proc.stdout
+
+
+def test_coverage_fails_when_something_is_unpinned(tmp_path):
+    proc = osdkc("vectors", "coverage", "--dir", str(small_copy(tmp_path, ("payloads",))))
+    assert proc.returncode == 1
+    assert "UNPINNED" in proc.stdout and "rule:frame.crc16" in proc.stdout.split("unpinned:")[-1]
+
+
+def test_a_wrong_hand_written_expectation_stops_the_generator():
+    sys.path.insert(0, str(ROOT / "tools"))
+    try:
+        import gen_vectors
+    finally:
+        sys.path.pop(0)
+    s = gen_vectors.Suite("t", "t", seed=1)
+    with pytest.raises(gen_vectors.GenerationError, match="disagrees with the reference"):
+        s.add("classify_control_mode", "a3-fw3.1", "t.a3.x", "t.c", "c", {"byte": 0x4B}, ["E15"],
+              expected={"fields": {}, "classification": "documented", "combination": 4})
+    with pytest.raises(gen_vectors.GenerationError, match="written error"):
+        s.add("decode_frame", "a3-fw3.1", "t.a3.y", "t.c", "c", {"hex": "aa"}, ["E22"], error="bad_crc16")
+
+
+def test_every_rule_and_errata_entry_is_pinned(cases):
+    by_rule, by_errata = coverage_counts(cases)
+    assert set(by_errata) == errata_ids() and len(by_errata) == 29
+    assert [e for e, n in by_errata.items() if not n] == []
+    assert [r for r, n in by_rule.items() if not n] == []
+    assert set(by_rule) == set(RULES)
+
+
+def test_ids_are_unique_and_flags_known(cases):
+    ids = [c.id for c in cases]
+    assert len(ids) == len(set(ids))
+    known = {f"rule:{r}" for r in RULES} | errata_ids()
+    assert {f for c in cases for f in c.flags} <= known
+
+
+def test_required_coverage_is_present(cases):
+    by_op_profile: dict[tuple[str, str | None], set] = {}
+    for c in cases:
+        by_op_profile.setdefault((c.operation, c.profile), set()).add(c.id)
+    for profile in reference.PROFILES:
+        # all 256 mode bytes per profile
+        assert {f"control_mode.{profile}.0x{b:02x}" for b in range(256)} <= by_op_profile[("classify_control_mode", profile)]
+        # every flag word of every profile at least once
+        bits = 14 if profile == "a3-fw3.1" else 12
+        ids = by_op_profile[("decode_payload", profile)]
+        for flags in range(1 << bits):
+            base = f"broadcast.{profile}.flags.0x{flags:04x}"
+            assert base in ids or base + ".short_by_1" in ids, base
+        # CRC-16 over every header bit, truncation at every byte
+        frame_ids = by_op_profile[("decode_frame", profile)]
+        assert {f"frames.{profile}.crc16.bit{b}" for b in range(96)} <= frame_ids
+        assert {f"frames.{profile}.truncated.{n}" for n in range(35)} <= frame_ids
+    # the worked frames are encoded byte for byte
+    worked = {c.id: c for c in cases if c.id.startswith("encode.frame.worked.")}
+    assert {c.expected["hex"] for c in worked.values()} == {
+        "aa230000000000003412e17201034b0000803f000000c00000003f0000f041fcdb01ba",
+        "aa1600000000000007001ede02000018035769c676b2"}
+
+
+def test_total_size_is_reasonable():
+    total = sum(p.stat().st_size for p in VECTORS_DIR.glob("*.json"))
+    assert total < 30_000_000, total
+
+
+# ------------------------------------------------------------ reproducibility
+
+
+def test_small_suites_regenerate_byte_for_byte(tmp_path):
+    args = [sys.executable, str(ROOT / "tools" / "gen_vectors.py"), "--out", str(tmp_path)]
+    for s in SMALL_SUITES:
+        args += ["--suite", s]
+    proc = subprocess.run(args, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    for s in SMALL_SUITES:
+        assert (tmp_path / f"{s}.json").read_bytes() == (VECTORS_DIR / f"{s}.json").read_bytes(), s
+
+
+@pytest.mark.slow
+def test_every_suite_regenerates_byte_for_byte():
+    proc = subprocess.run([sys.executable, str(ROOT / "tools" / "gen_vectors.py"), "--check"],
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+# ------------------------------------------------------------ tampering
+
+
+def test_a_tampered_file_fails_the_manifest_check(tmp_path):
+    d = small_copy(tmp_path)
+    f = d / "payloads.json"
+    f.write_text(f.read_text().replace('"comment":"get version', '"comment":"Get version', 1))
+    proc = osdkc("vectors", "check", "--dir", str(d), "--no-spec")
+    assert proc.returncode == 1
+    assert "payloads.json: SHA-256" in proc.stdout and "Traceback" not in proc.stderr
+
+
+def test_an_altered_expectation_fails_the_spec_check(tmp_path):
+    d = small_copy(tmp_path)
+    f = d / "payloads.json"
+    doc = json.loads(f.read_text())
+    test = next(t for g in doc["testGroups"] for t in g["tests"] if t["id"] == "payloads.a3-fw3.1.control_ack.0x0002")
+    test["expected"]["value"]["ack_code"]["value"] = 3
+    f.write_text(json.dumps(doc))
+    write_manifest(d)  # the manifest agrees: only the spec check can catch it
+    proc = osdkc("vectors", "check", "--dir", str(d))
+    assert proc.returncode == 1
+    assert "payloads.a3-fw3.1.control_ack.0x0002: no longer matches the spec" in proc.stdout
+
+
+def test_an_altered_error_class_fails_the_spec_check(tmp_path):
+    d = small_copy(tmp_path, ("frames",))
+    f = d / "frames.json"
+    f.write_text(f.read_text().replace('"expected":{"error":"bad_version"}', '"expected":{"error":"reserved_bits"}', 1))
+    write_manifest(d)
+    proc = osdkc("vectors", "check", "--dir", str(d))
+    assert proc.returncode == 1 and "now answers bad_version, expected reserved_bits" in proc.stdout
+
+
+def test_a_schema_violation_is_reported(tmp_path):
+    d = small_copy(tmp_path)
+    f = d / "payloads.json"
+    f.write_text(f.read_text().replace('"result":"valid"', '"result":"maybe"', 1))
+    write_manifest(d)
+    proc = osdkc("vectors", "check", "--dir", str(d), "--no-spec")
+    assert proc.returncode == 1 and "schema" in proc.stdout
+
+
+@pytest.mark.parametrize("content", ["{not json", "\udcff"])
+def test_unreadable_files_exit_2_without_traceback(tmp_path, content):
+    d = small_copy(tmp_path)
+    (d / "broken.json").write_bytes(content.encode("utf-8", "surrogateescape"))
+    for command in ("check", "coverage"):
+        proc = osdkc("vectors", command, "--dir", str(d))
+        assert proc.returncode == 2, proc.stdout + proc.stderr
+        assert "broken.json" in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_missing_directory_exits_2(tmp_path):
+    proc = osdkc("vectors", "check", "--dir", str(tmp_path / "nope"))
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+
+
+# ------------------------------------------------------------ compare()
+
+
+def case(op="decode_payload", result="valid", expected=None, **kw) -> Case:
+    return Case(file="t.json", operation=op, profile="a3-fw3.1", id="t.a.1", category="t.c", comment="c",
+                input=kw.get("input", {}), result=result, expected=expected, flags=("E01",))
+
+
+def test_compare_valid_is_exact_but_floats_by_bits():
+    c = case(expected={"value": {"x": {"f32": "0x7fc00001", "value": "NaN"}, "n": 1, "b": True}})
+    assert compare(c, {"ok": True, "result": {"value": {"x": {"f32": "0x7FC00001", "value": 12}, "n": 1, "b": True}}}) == (True, "")
+    ok, why = compare(c, {"ok": True, "result": {"value": {"x": {"f32": "0x7fc00000", "value": "NaN"}, "n": 1, "b": True}}})
+    assert not ok and "result.value.x" in why
+    assert not compare(c, {"ok": True, "result": {"value": {"x": {"f32": "0x7fc00001"}, "n": True, "b": True}}})[0]
+    assert not compare(c, {"ok": True, "result": {"value": {"x": {"f32": "0x7fc00001"}, "n": 1, "b": True, "e": 0}}})[0]
+    assert not compare(c, {"ok": False, "error": "truncated_payload", "detail": ""})[0]
+    assert compare(c, {"ok": False, "unsupported": True}) == (False, "the testee does not support this case")
+    assert not compare(c, "garbage")[0]
+
+
+def test_compare_invalid_and_acceptable():
+    bad = case(result="invalid", expected={"error": "bad_crc16"})
+    assert compare(bad, {"ok": False, "error": "bad_crc16", "detail": "x"}) == (True, "")
+    assert not compare(bad, {"ok": False, "error": "bad_crc32", "detail": "x"})[0]
+    assert not compare(bad, {"ok": True, "result": {}})[0]
+    either = case(op="encode_movement_control", result="acceptable",
+                  expected={"value": {"hex": "00" * 17}, "error": "undefined_mode"})
+    assert compare(either, {"ok": True, "result": {"hex": "00" * 17}}) == (True, "")
+    assert compare(either, {"ok": False, "error": "undefined_mode", "detail": ""}) == (True, "")
+    assert not compare(either, {"ok": False, "error": "out_of_range", "detail": ""})[0]
+    assert not compare(either, {"ok": True, "result": {"hex": "01" * 17}})[0]
+
+
+def test_compare_stream_events_on_the_named_fields_only():
+    frame = {"sof": "aa", "len": 12}
+    c = case(op="decode_stream", expected={"events": [
+        {"kind": "garbage", "offset": 0, "length": 2},
+        {"kind": "error", "offset": 2, "error": "bad_crc16", "length": 1},
+        {"kind": "frame", "offset": 3, "frame": frame, "command": "none"}]})
+    got = {"events": [
+        {"kind": "garbage", "offset": 0, "length": 2, "note": "x"},
+        {"kind": "error", "offset": 2, "error": "bad_crc16", "length": 1, "detail": "anything"},
+        {"kind": "frame", "offset": 3, "frame": frame}]}
+    assert compare(c, {"ok": True, "result": got}) == (True, "")
+    got["events"][1]["length"] = 2
+    ok, why = compare(c, {"ok": True, "result": got})
+    assert not ok and "events[1].length" in why
+    got["events"][1]["length"] = 1
+    assert not compare(c, {"ok": True, "result": {"events": got["events"][:2]}})[0]
+
+
+def test_every_case_passes_against_the_reference_itself(cases):
+    # The reference as a testee: what the bundled construct testee answers.
+    failures = []
+    for c in cases:
+        if c.operation == "decode_payload" and "flags.0x" in c.id:
+            continue  # thousands of them; covered by `vectors check`
+        passed, why = compare(c, reference.answer(c.operation, c.profile, c.input))
+        if not passed:
+            failures.append(f"{c.id}: {why}")
+    assert failures == []
+
+
+def test_requests_carry_the_profile_only_where_the_operation_takes_one(cases):
+    for c in cases:
+        req = c.request()
+        assert req["op"] == c.operation and req["id"] == c.id
+        assert ("profile" in req) == (c.operation not in reference.PROFILE_FREE)
+
+
+def test_every_errata_entry_names_a_vector_that_exists_and_pins_it():
+    import re
+
+    from osdk_conformance.paths import SPEC
+    from osdk_conformance.vectors import load_cases
+
+    text = (SPEC / "ERRATA.md").read_text()
+    named = dict(re.findall(r"^## (E\d+):.*?^- \*\*Vectors:\*\* `([^`]+)`", text, flags=re.M | re.S))
+    entries = re.findall(r"^## (E\d+):", text, flags=re.M)
+    assert sorted(named) == sorted(entries), "every entry needs a vector id on its Vectors line"
+    by_id = {c.id: c for c in load_cases()}
+    for entry, case_id in named.items():
+        assert case_id in by_id, f"{entry}: no vector {case_id}"
+        assert entry in by_id[case_id].flags, f"{entry}: vector {case_id} does not flag {entry}"
