@@ -187,14 +187,14 @@ def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,
              baseline: bool = True, vector_files: Sequence[str] | None = None) -> SelftestOutcome:
     """Run the mutants (default: all) against the vectors; see the module doc."""
     from . import mutants
-    from .runner import _load_cases
+    from .vectors import load_cases
 
     chosen = list(names) if names else list(mutants.MUTANTS)
     unknown = [n for n in chosen if n not in mutants.MUTANTS]
     if unknown:
         raise UsageError(f"no mutant {', '.join(map(repr, unknown))} (known: {', '.join(mutants.MUTANTS)})")
     t0 = time.monotonic()
-    cases, _compare = _load_cases(list(vector_files) if vector_files else None)
+    cases = load_cases(list(vector_files) if vector_files else None)
     ordered = interleave(cases)
     with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
         base = pool.submit(run_mutant, mutants.NONE, ordered, max_failures=0, timeout=max(timeout, 10.0),

@@ -42,6 +42,10 @@ def validator(ref: str | None = None):
 
 
 def test_bundled_implementations_agree():
+    # Bounded to keep the suite fast. A longer run once found a real
+    # disagreement (two header rules broken at once: aa0c0020200000000000892c);
+    # it was settled in docs/VALUE-MODEL.md (wire order) and pinned by the
+    # vector frames.*.header_only.ack_session0.enc1.
     proc = osdkc("fuzz", "--impl", "construct", "--impl", "kaitai-python", "--max-examples", "300", "--seed", "11")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "no disagreement" in proc.stderr and "Traceback" not in proc.stderr
@@ -80,7 +84,7 @@ def test_a_seed_replays_the_same_minimal_example(tmp_path):
     outs = []
     for k in range(2):
         out = tmp_path / f"case{k}.json"
-        proc = osdkc("fuzz", "--impl", "construct", "--testee", mutant("snan_quieted"), "--max-examples", "3000",
+        proc = osdkc("fuzz", "--impl", "construct", "--testee", mutant("bad_header_drops_12"), "--max-examples", "3000",
                      "--seed", "5", "--out", str(out))
         assert proc.returncode == 1, proc.stdout + proc.stderr
         outs.append(json.loads(out.read_text()))

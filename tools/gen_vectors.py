@@ -1040,6 +1040,11 @@ def gen_frames() -> Suite:
                 f"seq {seq}", frame_bytes(session=session, is_ack=is_ack, seq=seq), R("frame.header_only") + ["E22"])
         add("header_only.ack_session0", "frame.session", "header-only ACK in session 0: bad_session",
             frame_bytes(session=0, is_ack=True), R("frame.header_only", "frame.session") + ["E24"], error="bad_session")
+        add("header_only.ack_session0.enc1", "frame.session",
+            "header-only ACK in session 0 with ENC 1 and no padding: two rules broken, the first in wire order "
+            "(SESSION/ACK before ENC) is reported: bad_session (found by osdkc fuzz)",
+            frame_bytes(session=0, is_ack=True, enc=1), R("frame.header_only", "frame.session", "frame.enc")
+            + ["E23", "E24"], error="bad_session")
         # ENC and PADDING
         for enc in range(2, 8):
             add(f"enc.{enc}", "frame.enc", f"ENC {enc} (plain-sized DATA, PADDING 0): bad_encryption",

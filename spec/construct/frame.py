@@ -70,9 +70,11 @@ _header_bits = lsb_first(
     "padding" / BitsInteger(5),
     "enc" / Enum(BitsInteger(3), **ENCRYPTION),
     "res1" / Const(0, BitsInteger(24)),
-    # Named so that a failure's path says which rule failed.
-    checks=("_valid_len" / Check(_len_valid), "_valid_enc" / Check(_enc_valid),
-            "_valid_session" / Check(_session_valid)),
+    # Named so that a failure's path says which rule failed; in wire order,
+    # so that a header breaking several rules reports the first, as the
+    # .ksy (checked field by field) does.
+    checks=("_valid_len" / Check(_len_valid), "_valid_session" / Check(_session_valid),
+            "_valid_enc" / Check(_enc_valid)),
 )
 
 _crc16_covered = record(_sof, _header_bits, "seq" / Int16ul)
