@@ -15,21 +15,11 @@ from typing import IO, Any, Iterable, Iterator
 import construct
 
 from . import model
+from .commands import command_name
 from .errors import UsageError
 from .deframe import Frame, Garbage, Rejected, deframe, header_fields
 
 READ_SIZE = 64 * 1024
-
-# Command names by (set, id); the value types are in osdk_payload.ksy.
-COMMANDS = {
-    (0x00, 0x00): "version_query",
-    (0x00, 0x01): "activation",
-    (0x00, 0x10): "set_frequency",
-    (0x01, 0x00): "control_authority",
-    (0x01, 0x03): "movement_control",
-    (0x02, 0x00): "broadcast",
-    (0x02, 0x01): "lost_control",
-}
 
 # Which spec rule a failed check enforces, by the name of the field it guards.
 FIELD_ERRORS = {
@@ -103,7 +93,7 @@ class Decoder:
             key = (parsed.session, parsed.seq)
             if key in self._pending:
                 cmd = self._pending.pop(key)
-                out["ack_of"] = COMMANDS.get(cmd, "unknown")
+                out["ack_of"] = command_name(*cmd)
                 try:
                     out["ack"] = model.from_construct(self._payload(*cmd, True, self.profile).parse(data.ack_value))["body"]
                 except construct.ConstructError as e:
@@ -113,7 +103,7 @@ class Decoder:
                 out["command"] = "ack"
         else:
             cmd = (int(data.cmd_set), data.cmd_id)
-            out["command"] = COMMANDS.get(cmd, "unknown")
+            out["command"] = command_name(*cmd)
             if parsed.session > 0:
                 self._pending[(parsed.session, parsed.seq)] = cmd
                 if len(self._pending) > 1024:  # bounded: unanswered commands are forgotten

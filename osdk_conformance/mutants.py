@@ -431,6 +431,20 @@ def _ack_matching_disabled() -> None:
     Decoder._frame = _frame
 
 
+@_mutant("session1_ack_ignored", "ACKs in session 1 are not matched to their command (the SDK 3.1.9 receiver's "
+         "blind spot)", "E24", "rule:stream.ack_match")
+def _session1_ack_ignored() -> None:
+    from osdk_conformance.decode import Decoder
+
+    original = Decoder._frame
+
+    def _frame(self, ev):
+        self._pending = {k: v for k, v in self._pending.items() if k[0] != 1}
+        return original(self, ev)
+
+    Decoder._frame = _frame
+
+
 # ============================================================== broadcast
 
 

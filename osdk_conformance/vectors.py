@@ -26,8 +26,9 @@ runner uses:
     "value" never matters and every NaN payload counts. For decode_stream
     only the event fields PROTOCOL.md names are compared: `kind` and
     `offset` of every event, `error` and `length` of errors, `length` of
-    garbage, `frame` of frames; other fields (`detail`, `command`, `ack`,
-    ...) and other keys of the result are ignored. `reason` is "" when the
+    garbage, `frame` of frames, and `ack_of`/`ack` of a frame when either
+    side has them; other fields (`detail`, `command`, ...) and other keys of
+    the result are ignored. `reason` is "" when the
     case passed, else says what differed first and where. A response with
     `unsupported` does not pass; runners are expected to set those cases
     aside before calling compare.
@@ -57,9 +58,14 @@ COMPARED_EVENT_KEYS = {"frame": ("kind", "offset", "frame"), "error": ("kind", "
                        "garbage": ("kind", "offset", "length")}
 """The fields of a decode_stream event compare() looks at, by kind."""
 
+MATCHED_ACK_KEYS = ("ack_of", "ack")
+"""Fields of a frame event that exist only when an ACK was matched (by
+session and SEQ) to a command earlier in the stream; compared when present
+on either side."""
+
 STORED_EVENT_KEYS = ("kind", "offset", "error", "length", "frame", "command", "ack_of", "ack")
 """The fields of a decode_stream event the vectors record: the compared ones,
-plus `command`, `ack_of` and `ack` to show readers what was decoded."""
+plus `command` to show readers what was decoded."""
 
 
 class VectorFileError(UsageError):
@@ -229,6 +235,15 @@ def _stream_difference(expected: dict, got: Any) -> str | None:
             d = difference(e.get(k), g[k], f"result.events[{i}].{k}")
             if d:
                 return d
+        for k in MATCHED_ACK_KEYS:  # present exactly when the ACK was matched to its command
+            if (k in e) != (k in g):
+                return (f"result.events[{i}] ({e['kind']} at {e['offset']}): "
+                        + (f"missing {k} (the ACK answers a command earlier in the stream)" if k in e
+                           else f"unexpected {k} (no command in the stream matches this ACK)"))
+            if k in e:
+                d = difference(e[k], g[k], f"result.events[{i}].{k}")
+                if d:
+                    return d
     if len(want) != len(have):
         return (f"result.events: expected {len(want)} events, got {len(have)}"
                 + (f"; first extra: {_short(have[len(want)])}" if len(have) > len(want) else

@@ -66,6 +66,7 @@ from typing import Any
 from kaitaistruct import EndOfStreamError, KaitaiStream, KaitaiStruct, KaitaiStructError, ValidationFailedError
 
 from osdk_conformance import ksy, model
+from osdk_conformance.commands import command_name
 from osdk_conformance.crc import crc32
 from osdk_conformance.deframe import HEADER_LEN, Frame, Garbage, Rejected, Deframer, frame_length, header_problem
 from osdk_conformance.rules import classify_control_mode, input_ranges
@@ -375,8 +376,13 @@ class StreamDecoder:
                 key = (f.session, f.seq)
                 if key in self.pending:
                     cmd_set, cmd_id = self.pending.pop(key)
-                    ack = parse(lambda io: OsdkPayload(cmd_set, cmd_id, True, _profile(self.profile), io),
-                                f.data.ack_value)
+                    out["ack_of"] = command_name(cmd_set, cmd_id)
+                    try:
+                        ack = parse(lambda io: OsdkPayload(cmd_set, cmd_id, True, _profile(self.profile), io),
+                                    f.data.ack_value)
+                    except Rejection as r:
+                        return {"offset": ev.offset, "kind": "error", "error": r.cls, "detail": r.detail,
+                                "length": len(ev.raw), "ack_of": out["ack_of"]}
                     out["ack"] = payload_body_model(ack, f.data.ack_value)
             elif f.session > 0:
                 self.pending[(f.session, f.seq)] = (int(f.data.cmd_set), f.data.cmd_id)
