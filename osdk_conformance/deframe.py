@@ -164,6 +164,17 @@ class Deframer:
         return event
 
 
+def split_chunks(data: bytes, sizes: list[int]) -> list[bytes]:
+    """`data` cut into reads of the given sizes; what they leave over is one last read."""
+    out, pos = [], 0
+    for size in sizes:
+        out.append(data[pos:pos + size])
+        pos += size
+    if pos < len(data):
+        out.append(data[pos:])
+    return out
+
+
 def deframe(chunks: Iterable[bytes]) -> Iterator[Event]:
     d = Deframer()
     for chunk in chunks:

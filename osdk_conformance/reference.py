@@ -50,7 +50,7 @@ import construct
 
 from . import model
 from .decode import Decoder, classify
-from .deframe import HEADER_LEN, deframe, frame_length, header_problem
+from .deframe import HEADER_LEN, deframe, frame_length, header_problem, split_chunks
 from .crc import crc32
 
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
@@ -238,17 +238,6 @@ def _decode_frame(profile: str, inp: dict) -> dict:
     except construct.ConstructError as e:
         return _construct_error(e)
     return ok({"frame": model.from_construct(parsed)})
-
-
-def split_chunks(data: bytes, sizes: list[int]) -> list[bytes]:
-    """`data` cut into reads of the given sizes; what they leave over is one last read."""
-    out, pos = [], 0
-    for size in sizes:
-        out.append(data[pos:pos + size])
-        pos += size
-    if pos < len(data):
-        out.append(data[pos:])
-    return out
 
 
 def _decode_stream(profile: str, inp: dict) -> dict:

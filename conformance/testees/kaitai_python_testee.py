@@ -68,7 +68,9 @@ from kaitaistruct import EndOfStreamError, KaitaiStream, KaitaiStruct, KaitaiStr
 from osdk_conformance import ksy, model
 from osdk_conformance.commands import command_name
 from osdk_conformance.crc import crc32
-from osdk_conformance.deframe import HEADER_LEN, Frame, Garbage, Rejected, Deframer, frame_length, header_problem
+from osdk_conformance.deframe import (HEADER_LEN, Deframer, Frame, Garbage, Rejected, frame_length,
+                                      header_problem, split_chunks)
+from osdk_conformance.serve import serve
 from osdk_conformance.rules import classify_control_mode, input_ranges
 from osdk_kaitai.osdk_control_mode import OsdkControlMode
 from osdk_kaitai.osdk_frame import OsdkFrame
@@ -337,16 +339,6 @@ def decode_frame(req: dict, profile: str) -> dict:
     return {"frame": frame_model(_frame(data, profile), data)}
 
 
-def _chunks(data: bytes, sizes: list[int]) -> list[bytes]:
-    out, pos = [], 0
-    for size in sizes:
-        out.append(data[pos:pos + size])
-        pos += size
-    if pos < len(data):
-        out.append(data[pos:])
-    return out
-
-
 class StreamDecoder:
     """Events of a stream: Deframer boundaries, Kaitai values, ACK matching."""
 
@@ -398,7 +390,7 @@ def decode_stream(req: dict, profile: str) -> dict:
     if not all(isinstance(s, int) and not isinstance(s, bool) and s >= 0 for s in sizes):
         raise BadRequest("argument 'chunks' must be a list of non-negative integers")
     d, dec, events = Deframer(), StreamDecoder(profile), []
-    for chunk in _chunks(data, sizes):
+    for chunk in split_chunks(data, sizes):
         events += [dec.event(ev) for ev in d.feed(chunk)]
     events += [dec.event(ev) for ev in d.finish()]
     return {"events": events}
@@ -430,23 +422,7 @@ def answer(req: Any) -> dict:
 
 
 def main() -> int:
-    out = sys.stdout
-    for line in sys.stdin:
-        if not line.strip():
-            continue
-        try:
-            res = answer(json.loads(line))
-        except (ValueError, RecursionError) as e:  # BadRequest, and JSON that does not parse
-            res = {"ok": False, "error": "bad_request", "detail": f"{type(e).__name__}: {e}"}
-        except Exception as e:  # a bug of ours: a failed case, not a dead testee
-            res = {"ok": False, "error": "internal_error", "detail": f"{type(e).__name__}: {e}"}
-        try:
-            text = model.dumps(res)
-        except (TypeError, ValueError) as e:
-            text = json.dumps({"ok": False, "error": "internal_error", "detail": f"unserialisable answer: {e}"})
-        out.write(text + "\n")
-        out.flush()
-    return 0
+    return serve(answer)
 
 
 if __name__ == "__main__":
