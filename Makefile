@@ -7,9 +7,16 @@ BIN    := $(VENV)/bin
 PY_OK  := $(VENV)/.installed
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup kit test quick regen check-generated vectors clean
+.PHONY: setup testees kit test quick regen check-generated vectors clean
 
-setup: $(PY_OK) $(JS_OK)
+# Bundled testees in other languages, each built by its own Makefile with
+# the language's standard tool (npm, Maven, go build, cc).
+LANGS  := javascript java go c
+
+setup: $(PY_OK) $(JS_OK) testees
+
+testees: $(PY_OK) $(JS_OK)
+	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang build || exit 1; done
 
 $(PY_OK): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -45,3 +52,4 @@ quick: setup
 
 clean:
 	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis
+	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang clean; done

@@ -36,19 +36,32 @@ from .testee import (
 
 TESTEES = ROOT / "conformance" / "testees"
 
-# The implementations this kit bundles, by the name `--impl` takes.
-BUNDLED_IMPLS: dict[str, Path] = {
-    "construct": TESTEES / "construct_testee.py",
-    "kaitai-python": TESTEES / "kaitai_python_testee.py",
+# The implementations this kit bundles, by the name `--impl` takes: the
+# command that starts each (relative paths from the repository root). The
+# compiled ones are built by `make setup` (conformance/testees/<lang>/Makefile).
+BUNDLED_IMPLS: dict[str, list[str]] = {
+    "construct": [sys.executable, str(TESTEES / "construct_testee.py")],
+    "kaitai-python": [sys.executable, str(TESTEES / "kaitai_python_testee.py")],
+    "js": ["node", str(TESTEES / "javascript" / "testee.js")],
+    "java": ["java", "-Xss8m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1",
+             "-jar", str(TESTEES / "java" / "target" / "osdk-java-testee.jar")],
+    "go": [str(TESTEES / "go" / "bin" / "osdk-go-testee")],
+    "c": [str(TESTEES / "c" / "build" / "osdk-c-testee")],
 }
+# What a built implementation needs on disk, and how to get it.
+BUILD_HINT = "run `make setup` (it builds every bundled testee)"
 
 
 def impl_argv(name: str) -> list[str]:
-    """The command that runs a bundled implementation, with this interpreter."""
+    """The command that runs a bundled implementation."""
     try:
-        return [sys.executable, str(BUNDLED_IMPLS[name])]
+        argv = list(BUNDLED_IMPLS[name])
     except KeyError:
         raise UsageError(f"no bundled implementation {name!r} (known: {', '.join(BUNDLED_IMPLS)})") from None
+    for part in argv[1:] if argv[0] in (sys.executable, "node", "java") else argv[:1]:
+        if part.startswith("/") and not Path(part).exists():
+            raise UsageError(f"bundled implementation {name!r} is not built ({part} is missing); {BUILD_HINT}")
+    return argv
 
 
 # ---- failure list ----------------------------------------------------------------

@@ -1,7 +1,8 @@
 #!/usr/bin/env node
 // Compile .ksy files with the pinned kaitai-struct-compiler npm package.
 //
-// usage: node compile.js --target LANG --out DIR [--python-package PKG] FILE.ksy...
+// usage: node compile.js --target LANG --out DIR [--python-package PKG]
+//        [--go-package PKG] [--java-package PKG] FILE.ksy...
 //
 // The npm build of the compiler offers only a JS API, and that API silently
 // drops style warnings (it throws on errors only). We need "compiles with no
@@ -20,17 +21,19 @@ function fail(msg) {
 }
 
 function parseArgs(argv) {
-  const opts = { files: [], target: null, out: null, pythonPackage: '' };
+  const opts = { files: [], target: null, out: null, pythonPackage: '', goPackage: '', javaPackage: '' };
   for (let i = 0; i < argv.length; i++) {
     const a = argv[i];
     if (a === '--target') opts.target = argv[++i];
     else if (a === '--out') opts.out = argv[++i];
     else if (a === '--python-package') opts.pythonPackage = argv[++i];
+    else if (a === '--go-package') opts.goPackage = argv[++i];
+    else if (a === '--java-package') opts.javaPackage = argv[++i];
     else if (a.startsWith('--')) fail(`unknown option ${a}`);
     else opts.files.push(a);
   }
   if (!opts.target || !opts.out || opts.files.length === 0) {
-    fail('usage: compile.js --target LANG --out DIR [--python-package PKG] FILE.ksy...');
+    fail('usage: compile.js --target LANG --out DIR [--python-package PKG] [--go-package PKG] [--java-package PKG] FILE.ksy...');
   }
   return opts;
 }
@@ -39,13 +42,25 @@ function parseArgs(argv) {
 // just before the JS API discards the warnings among them.
 const ANCHOR = 'var problems = $as_sc_Iterable(problems$2);';
 
+// Anchor in kaitai-struct-compiler 0.11.0: the runtime configuration the JS
+// API builds for every compile, with the Go package and the Java package
+// hard-wired to "" (no `package` clause, which is not valid Go). The hook lets
+// the command line choose them, as the compiler's own CLI does with
+// --go-package and --java-package.
+const CONFIG_ANCHOR = 'var config = new $c_Lio_kaitai_struct_RuntimeConfig((!debug), debug, false, true, false, new $c_Lio_kaitai_struct_CppRuntimeConfig($m_sci_Nil$(), false, false, false, $m_Lio_kaitai_struct_CppRuntimeConfig$RawPointers$()), "", new $c_Lio_kaitai_struct_JavaRuntimeConfig("", ';
+const CONFIG_HOOKED = 'var config = new $c_Lio_kaitai_struct_RuntimeConfig((!debug), debug, false, true, false, new $c_Lio_kaitai_struct_CppRuntimeConfig($m_sci_Nil$(), false, false, false, $m_Lio_kaitai_struct_CppRuntimeConfig$RawPointers$()), globalThis.__kscGoPackage, new $c_Lio_kaitai_struct_JavaRuntimeConfig(globalThis.__kscJavaPackage, ';
+
 function loadCompiler() {
   const file = require.resolve('kaitai-struct-compiler');
   const src = fs.readFileSync(file, 'utf8');
   if (src.split(ANCHOR).length !== 2) {
     fail('cannot find the problem-reporting hook in kaitai-struct-compiler; is it version 0.11.0?');
   }
-  const hooked = src.replace(ANCHOR,
+  if (src.split(CONFIG_ANCHOR).length !== 2) {
+    fail('cannot find the runtime-configuration hook in kaitai-struct-compiler; is it version 0.11.0?');
+  }
+  // split/join, not replace: the compiled source is full of `$`.
+  const hooked = src.split(CONFIG_ANCHOR).join(CONFIG_HOOKED).replace(ANCHOR,
     ANCHOR + ' if (globalThis.__kscProblems) { $n(problems).foreach__F1__V(new $c_sjsr_AnonFunction1((p) => { globalThis.__kscProblems(p); })); }');
   const m = new Module(file, module);
   m.filename = file;
@@ -65,6 +80,8 @@ function loadKsy(file) {
 
 async function main() {
   const opts = parseArgs(process.argv.slice(2));
+  globalThis.__kscGoPackage = opts.goPackage;
+  globalThis.__kscJavaPackage = opts.javaPackage;
   const compiler = loadCompiler();
   let problems = 0;
   globalThis.__kscProblems = (p) => {

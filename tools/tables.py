@@ -1,0 +1,166 @@
+"""The language-neutral tables every generated implementation needs besides
+its parser: what spec/rules.yaml and the .ksy files say, flattened into data
+so that no testee re-implements the rules engine or re-reads YAML.
+
+Written by tools/regen.py to generated/tables/osdk_tables.json (and read by
+the C generator). Everything here is derived, none of it is typed by hand
+except ERROR_BY_FIELD, which restates the table of docs/VALUE-MODEL.md.
+
+- crc: CRC-16/CRC-32 parameters (init as the register value, as the SDK
+  code holds it; ERRATA E21);
+- commands: (set, id) -> the command name streams report as `ack_of`;
+- error_by_field: the error class a failed `valid` check of a field means;
+- control_modes: per profile, for each of the 256 mode bytes, the
+  classification and combination index; per combination its setpoint
+  ranges (ERRATA E15, E16);
+- model: per ksy type (key "file" or "file.type.subtype"), its class path
+  and its seq fields in wire order with what the value model needs to
+  render each (docs/VALUE-MODEL.md); enums by "file.enum".
+"""
+from __future__ import annotations
+
+import json
+import re
+import sys
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from osdk_conformance import ksy, rules  # noqa: E402
+from osdk_conformance.commands import COMMANDS  # noqa: E402
+from osdk_conformance.model import SKIPPED_FIELDS  # noqa: E402
+
+# docs/VALUE-MODEL.md, "Error classes": the class of a failed `valid`.
+ERROR_BY_FIELD = {
+    "sof": "bad_sof",
+    "len": "impossible_length",
+    "ver": "bad_version",
+    "res0": "reserved_bits",
+    "res1": "reserved_bits",
+    "reserved_flags": "reserved_bits",
+    "enc": "bad_encryption",
+    "is_ack": "bad_session",
+    "trailing": "length_mismatch",
+}
+
+_PRIM = re.compile(r"^(u|s)(1|2|4|8)(le|be)?$")
+_FLOAT = re.compile(r"^f(4|8)(le|be)?$")
+_BITS = re.compile(r"^b(\d+)$")
+
+
+def _enum_key(file_id: str, ref: str) -> str:
+    if "::" in ref:
+        f, name = ref.split("::", 1)
+        return f"{f}.{name}"
+    return f"{file_id}.{ref}"
+
+
+def _type_key(file_id: str, path: tuple[str, ...]) -> str:
+    return ".".join((file_id,) + path)
+
+
+def _field_model(file_id: str, spec: dict) -> dict[str, Any]:
+    out: dict[str, Any] = {"id": spec["id"]}
+    t = spec.get("type")
+    if "enum" in spec:
+        out["enum"] = _enum_key(file_id, spec["enum"])
+    if isinstance(t, dict):
+        out["kind"] = "switch"
+    elif t is None:
+        out["kind"] = "bytes"
+    elif m := _PRIM.match(t):
+        out["kind"] = "int"
+        out["signed"] = m.group(1) == "s"
+        out["width"] = int(m.group(2))
+    elif m := _FLOAT.match(t):
+        out["kind"] = "float"
+        out["width"] = int(m.group(1))
+    elif m := _BITS.match(t):
+        n = int(m.group(1))
+        out["kind"] = "bool" if n == 1 and "enum" not in spec else "bits"
+        out["width_bits"] = n
+    else:
+        out["kind"] = "struct"
+    if "repeat" in spec:
+        out["repeat"] = True
+    if "if" in spec:
+        out["optional"] = True
+    return out
+
+
+def model_tables() -> dict[str, Any]:
+    index = ksy.load()
+    types: dict[str, Any] = {}
+    for (file_id, path), kt in sorted(index.types.items()):
+        body = index.files[file_id]
+        for part in path:
+            body = body["types"][part]
+        fields = [_field_model(file_id, f) for f in (body.get("seq") or []) if f["id"] not in SKIPPED_FIELDS]
+        types[_type_key(file_id, path)] = {
+            "class_path": [ksy.camel(file_id)] + [ksy.camel(p) for p in path],
+            # every seq id in order: a runtime's validation error names its
+            # field by position ("/seq/N"), skipped fields included
+            "seq": [f["id"] for f in (body.get("seq") or [])],
+            "fields": fields,
+        }
+    enums = {
+        f"{file_id}.{name}": {str(k): v for k, v in sorted(values.items())}
+        for (file_id, name), values in sorted(index.enums.items())
+    }
+    return {"types": types, "enums": enums}
+
+
+def control_mode_tables(r: rules.Rules) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for profile in r.profile_names:
+        modes = []
+        combos: dict[str, Any] = {}
+        for byte in range(256):
+            c = r.classify_control_mode(byte, profile)
+            modes.append({"classification": c["classification"], "combination": c["combination"]})
+            if c["classification"] == "documented":
+                ranges = r.input_ranges(byte, profile)
+                entry = {axis: {"min": lim.get("min"), "max": lim.get("max")}
+                         for axis, lim in sorted(ranges.items())}
+                prev = combos.setdefault(str(c["combination"]), entry)
+                if prev != entry:
+                    raise SystemExit(f"tables: combination {c['combination']} has byte-dependent ranges on {profile}")
+        out[profile] = {"modes": modes, "ranges": combos}
+    return out
+
+
+def crc_tables(r: rules.Rules) -> dict[str, Any]:
+    out = {}
+    for name in ("crc16", "crc32"):
+        p = r.crc_params(name)
+        out[name] = {
+            "width": p.width, "poly": p.poly, "init": p.init, "reflect_in": p.reflect_in,
+            "reflect_out": p.reflect_out, "xorout": p.xorout, "check": p.check,
+            "covers": list(p.covers), "stored_at": list(p.stored_at),
+        }
+    return out
+
+
+def tables() -> dict[str, Any]:
+    r = rules.default_rules()
+    return {
+        "comment": "Generated from spec/ by tools/regen.py (tools/tables.py). Do not edit.",
+        "profiles": list(r.profile_names),
+        "crc": crc_tables(r),
+        "commands": [{"cmd_set": s, "cmd_id": i, "name": n} for (s, i), n in sorted(COMMANDS.items())],
+        "error_by_field": ERROR_BY_FIELD,
+        "control_modes": control_mode_tables(r),
+        "model": model_tables(),
+    }
+
+
+def write(out_dir: Path) -> None:
+    out_dir.mkdir(parents=True, exist_ok=True)
+    text = json.dumps(tables(), indent=1, sort_keys=False, allow_nan=False) + "\n"
+    (out_dir / "osdk_tables.json").write_text(text)
+
+
+if __name__ == "__main__":
+    write(Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "generated" / "tables")
