@@ -119,7 +119,8 @@ types:
         if: not _parent.is_ack
         doc: Command id within the set.
       - id: value
-        type: osdk_payload(cmd_set.to_i, cmd_id, false, _root.profile)
+        # .as<u1>: the Go target passes the enum untyped otherwise
+        type: osdk_payload(cmd_set.to_i.as<u1>, cmd_id, false, _root.profile)
         size-eos: true
         if: not _parent.is_ack
         doc: The command's value, typed by set and id.

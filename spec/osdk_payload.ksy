@@ -61,7 +61,8 @@ seq:
     doc: Bytes after a known value; a conforming value has none.
 instances:
   key:
-    value: '(is_ack ? 0x10000 : 0) + cmd_set * 0x100 + cmd_id'
+    # .as<u4> on every term: the Go target would compute in u1 and overflow
+    value: '(is_ack ? 0x10000 : 0).as<u4> + cmd_set.as<u4> * 0x100 + cmd_id.as<u4>'
     doc: Dispatch key, 0x1SSII for ACKs and 0x0SSII for commands (SS set, II id).
 types:
   version_query:

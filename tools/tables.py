@@ -23,7 +23,7 @@ import json
 import re
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
@@ -112,6 +112,41 @@ def model_tables() -> dict[str, Any]:
     return {"types": types, "enums": enums}
 
 
+def _seqs() -> Iterator[tuple[str, list[dict]]]:
+    """(type key, raw seq) of every ksy type."""
+    index = ksy.load()
+    for (file_id, path), _ in sorted(index.types.items()):
+        body = index.files[file_id]
+        for part in path:
+            body = body["types"][part]
+        yield _type_key(file_id, path), body.get("seq") or []
+
+
+def if_expressions() -> dict[str, Any]:
+    """The `if` of every conditional seq field, by type key and field id.
+    A runtime whose objects cannot show that an integer field is absent (Go
+    keeps a zero there) evaluates the expression itself."""
+    out: dict[str, Any] = {}
+    for key, seq in _seqs():
+        conds = {f["id"]: (str(f["if"]).lower() if isinstance(f["if"], bool) else str(f["if"]))
+                 for f in seq if "if" in f}
+        if conds:
+            out[key] = conds
+    return out
+
+
+def checked_fields() -> dict[str, Any]:
+    """The seq fields with a `valid` or `contents` check, by type key. With
+    the position ("/seq/N") a validation error gives, they say which field
+    failed when the runtime's error does not name the raising type (Go)."""
+    out: dict[str, Any] = {}
+    for key, seq in _seqs():
+        ids = [f["id"] for f in seq if "valid" in f or "contents" in f]
+        if ids:
+            out[key] = ids
+    return out
+
+
 def control_mode_tables(r: rules.Rules) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for profile in r.profile_names:
@@ -153,6 +188,8 @@ def tables() -> dict[str, Any]:
         "error_by_field": ERROR_BY_FIELD,
         "control_modes": control_mode_tables(r),
         "model": model_tables(),
+        "if_expressions": if_expressions(),
+        "checked_fields": checked_fields(),
     }
 
 

@@ -393,7 +393,7 @@ func (this *OsdkFrame_FrameData) Read(io *kaitai.Stream, parent *OsdkFrame, root
 		tmp21 = tmp21
 		this._raw_Value = tmp21
 		_io__raw_Value := kaitai.NewStream(bytes.NewReader(this._raw_Value))
-		tmp22 := NewOsdkPayload(this.CmdSet, this.CmdId, false, this._root.Profile)
+		tmp22 := NewOsdkPayload(uint8(this.CmdSet), this.CmdId, false, this._root.Profile)
 		err = tmp22.Read(_io__raw_Value, nil, nil)
 		if err != nil {
 			return err

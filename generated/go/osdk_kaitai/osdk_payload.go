@@ -268,7 +268,7 @@ func (this *OsdkPayload) Key() (v int, err error) {
 	} else {
 		tmp16 = 0
 	}
-	this.key = int((tmp16 + this.CmdSet * 256) + this.CmdId)
+	this.key = int((uint32(tmp16) + uint32(this.CmdSet) * 256) + uint32(this.CmdId))
 	return this.key, nil
 }
 

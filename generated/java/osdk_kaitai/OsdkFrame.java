@@ -205,7 +205,7 @@ public class OsdkFrame extends KaitaiStruct {
             if (!(_parent().isAck())) {
                 this._raw_value = this._io.readBytesFull();
                 KaitaiStream _io__raw_value = new ByteBufferKaitaiStream(this._raw_value);
-                this.value = new OsdkPayload(_io__raw_value, cmdSet().id(), cmdId(), false, _root().profile());
+                this.value = new OsdkPayload(_io__raw_value, ((Number) (cmdSet().id())).intValue(), cmdId(), false, _root().profile());
             }
             if (_parent().isAck()) {
                 this.ackValue = this._io.readBytesFull();

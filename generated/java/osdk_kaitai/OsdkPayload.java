@@ -857,7 +857,7 @@ public class OsdkPayload extends KaitaiStruct {
     public Integer key() {
         if (this.key != null)
             return this.key;
-        this.key = ((Number) (((isAck() ? 65536 : 0) + cmdSet() * 256) + cmdId())).intValue();
+        this.key = ((Number) ((((Number) ((isAck() ? 65536 : 0))).longValue() + ((Number) (cmdSet())).longValue() * 256) + ((Number) (cmdId())).longValue())).intValue();
         return this.key;
     }
     private KaitaiStruct body;

@@ -1,0 +1,184 @@
+package main
+
+import (
+	"encoding/binary"
+	"path/filepath"
+	"reflect"
+	"sort"
+	"testing"
+)
+
+func testTables(t *testing.T) *Tables {
+	t.Helper()
+	tb, err := loadTables(filepath.Join("..", "..", "..", "generated", "tables", "osdk_tables.json"))
+	if err != nil {
+		t.Fatal(err)
+	}
+	return tb
+}
+
+func testSums(t *testing.T, tb *Tables) Checksums {
+	t.Helper()
+	te, err := NewTestee(tb)
+	if err != nil {
+		t.Fatal(err)
+	}
+	return te.sums
+}
+
+func TestCRCCheckValues(t *testing.T) {
+	tb := testTables(t)
+	for _, name := range []string{"crc16", "crc32"} {
+		c, err := NewCRC(tb.CRC[name])
+		if err != nil {
+			t.Fatal(err)
+		}
+		if got, want := c.Sum([]byte("123456789")), tb.CRC[name].Check; got != want {
+			t.Errorf("%s check value 0x%x, want 0x%x", name, got, want)
+		}
+	}
+	// A textbook CRC of the other shift direction: CRC-16/XMODEM.
+	x, _ := NewCRC(CRCParams{Width: 16, Poly: 0x1021})
+	if got := x.Sum([]byte("123456789")); got != 0x31C3 {
+		t.Errorf("CRC-16/XMODEM check value 0x%x, want 0x31c3", got)
+	}
+}
+
+// frame builds a plain frame with good CRCs around data (nil: header only).
+func frame(s Checksums, session byte, seq uint16, data []byte) []byte {
+	n := headerLen
+	if data != nil {
+		n += len(data) + crc32Len
+	}
+	f := make([]byte, headerLen, n)
+	f[0] = sof
+	binary.LittleEndian.PutUint16(f[1:], uint16(n))
+	f[3] = session
+	binary.LittleEndian.PutUint16(f[8:], seq)
+	binary.LittleEndian.PutUint16(f[10:], uint16(s.crc16.Sum(f[:10])))
+	if data != nil {
+		f = append(f, data...)
+		f = binary.LittleEndian.AppendUint32(f, uint32(s.crc32.Sum(f)))
+	}
+	return f
+}
+
+type brief struct {
+	kind   EventKind
+	offset int
+	error  string
+	length int
+}
+
+func deframeAll(s Checksums, data []byte, sizes []int) []brief {
+	d := NewDeframer(s)
+	var evs []Event
+	for _, c := range splitChunks(data, sizes) {
+		evs = append(evs, d.Feed(c)...)
+	}
+	evs = append(evs, d.Finish()...)
+	out := make([]brief, len(evs))
+	for i, e := range evs {
+		out[i] = brief{e.Kind, e.Offset, e.Error, e.Length}
+		if e.Kind == EvFrame {
+			out[i].length = len(e.Raw)
+		}
+	}
+	return out
+}
+
+func TestDeframerResync(t *testing.T) {
+	s := testSums(t, testTables(t))
+	good := frame(s, 2, 7, []byte{0x01, 0x03, 0xAA, 0x55})
+	short := frame(s, 0, 1, nil)
+	// A frame whose CRC-32 is wrong and which hides a good header-only frame.
+	outer := frame(s, 2, 8, append(append([]byte{0x00, 0x00}, short...), 0x00))
+	outer[len(outer)-1] ^= 0xFF
+
+	var in []byte
+	in = append(in, 0x01, 0x02)            // garbage
+	in = append(in, 0xAA, 0x00)            // a start byte with no header behind it
+	in = append(in, good...)               // offset 4
+	in = append(in, outer...)              // offset 4+20
+	in = append(in, good[:headerLen+2]...) // a truncated tail
+	o := 4 + len(good)
+	want := []brief{
+		{EvGarbage, 0, "", 2},
+		{EvRejected, 2, "bad_crc16", 1},
+		{EvGarbage, 3, "", 1},
+		{EvFrame, 4, "", len(good)},
+		{EvRejected, o, "bad_crc32", len(outer)},
+		// rescanning after the rejected start byte: the rest of its header
+		// and two value bytes, then the frame hidden in its value
+		{EvGarbage, o + 1, "", headerLen + 1},
+		{EvFrame, o + headerLen + 2, "", headerLen},
+		{EvGarbage, o + 2*headerLen + 2, "", len(outer) - 2*headerLen - 2},
+		{EvRejected, o + len(outer), "truncated_frame", headerLen + 2},
+		{EvGarbage, o + len(outer) + 1, "", headerLen + 1},
+	}
+
+	for _, sizes := range [][]int{nil, {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}, {5, 0, 30, 3}} {
+		got := deframeAll(s, in, sizes)
+		if !reflect.DeepEqual(got, want) {
+			t.Errorf("chunks %v:\n got %v\nwant %v", sizes, got, want)
+		}
+	}
+}
+
+func TestSplitChunks(t *testing.T) {
+	got := splitChunks([]byte{1, 2, 3, 4, 5}, []int{2, 0, 1 << 62, 3})
+	want := [][]byte{{1, 2}, {}, {3, 4, 5}, {}}
+	if !reflect.DeepEqual(got, want) {
+		t.Errorf("got %v, want %v", got, want)
+	}
+}
+
+// Every ksy type of the tables has its generated Go struct in
+// generatedTypes, with a Go field for every field the model shows.
+func TestRegistryCoversTables(t *testing.T) {
+	tb := testTables(t)
+	var fromGo, fromTables []string
+	for _, gt := range generatedTypes {
+		fromGo = append(fromGo, gt.Name())
+		key, ok := tb.typeByClass[gt.Name()]
+		if !ok {
+			continue
+		}
+		for _, f := range tb.Model.Types[key].Fields {
+			if _, ok := gt.FieldByName(camel(f.ID)); !ok {
+				t.Errorf("%s: no Go field %s", key, camel(f.ID))
+			}
+		}
+	}
+	for name := range tb.typeByClass {
+		fromTables = append(fromTables, name)
+	}
+	sort.Strings(fromGo)
+	sort.Strings(fromTables)
+	if !reflect.DeepEqual(fromGo, fromTables) {
+		t.Errorf("generatedTypes %v\n   tables types %v", fromGo, fromTables)
+	}
+}
+
+func TestEvalCondition(t *testing.T) {
+	type parent struct{ IsAck bool }
+	type child struct {
+		Len     uint64
+		HasMode bool
+		_parent *parent
+	}
+	obj := &child{Len: 20, _parent: &parent{IsAck: true}}
+	for expr, want := range map[string]bool{
+		"len > 12": true, "len > 20": false, "has_mode": false, "not has_mode": true,
+		"_parent.is_ack": true, "not _parent.is_ack": false,
+		"(len >= 0x14) and not (has_mode or false)": true,
+	} {
+		got, err := evalCondition(expr, reflect.ValueOf(obj))
+		if err != nil || got != want {
+			t.Errorf("%s: got %v, %v; want %v", expr, got, err, want)
+		}
+	}
+	if _, err := evalCondition("len + 1", reflect.ValueOf(obj)); err == nil {
+		t.Error("len + 1: accepted")
+	}
+}
