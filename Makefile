@@ -7,13 +7,17 @@ BIN    := $(VENV)/bin
 PY_OK  := $(VENV)/.installed
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup testees kit test quick regen check-generated vectors clean
+.PHONY: setup system-packages testees kit test quick regen check-generated vectors clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
 LANGS  := javascript java go c
 
-setup: $(PY_OK) $(JS_OK) testees
+setup: system-packages $(PY_OK) $(JS_OK) testees
+
+# clang + sanitizer/libFuzzer runtimes from Debian, pinned (tools/apt-packages.sh).
+system-packages:
+	@sh tools/apt-packages.sh
 
 testees: $(PY_OK) $(JS_OK)
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang build || exit 1; done

@@ -462,8 +462,8 @@ def start_fuzzees(commands: Sequence[tuple[str | None, Sequence[str]]],
     """Start every testee and ask for its capabilities. A testee's label is
     the one given, else the name it reports in its capabilities, else its
     command; repeated labels get #2, #3, ..."""
-    from .runner import parse_capabilities
-    from .testee import Testee, TesteeFailure, TesteeStartError
+    from .runner import BUNDLED_MEMORY_MB, parse_capabilities
+    from .testee import DEFAULT_MEMORY_MB, Testee, TesteeFailure, TesteeStartError
 
     out: list[Fuzzee] = []
     for label, argv in commands:
@@ -471,7 +471,8 @@ def start_fuzzees(commands: Sequence[tuple[str | None, Sequence[str]]],
         try:
             # Restarts are unlimited: a testee that crashes on every shrunk
             # example must keep answering with testee_crash, deterministically.
-            f.testee = Testee(argv, timeout=timeout, max_restarts=1 << 30)
+            f.testee = Testee(argv, timeout=timeout, max_restarts=1 << 30,
+                              memory_mb=BUNDLED_MEMORY_MB.get(label or "", DEFAULT_MEMORY_MB))
             f.testee.start()
             caps = parse_capabilities(f.testee.request({"op": "capabilities"}))
         except (TesteeStartError, TesteeFailure, ValueError) as e:
@@ -648,12 +649,12 @@ def suite_document(group: dict) -> dict:
 
 
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
-    from .runner import BUNDLED_IMPLS
+    from .runner import ALL, BUNDLED_IMPLS
 
     p.add_argument("--testee", action="append", default=[], metavar="COMMAND",
                    help="command that starts an implementation (split like a shell does; repeatable)")
-    p.add_argument("--impl", action="append", default=[], choices=sorted(BUNDLED_IMPLS),
-                   help="a bundled implementation (repeatable)")
+    p.add_argument("--impl", action="append", default=[], choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
+                   help=f"a bundled implementation (repeatable; {', '.join(BUNDLED_IMPLS)}), or {ALL} for every one")
     p.add_argument("--seconds", type=float, metavar="N",
                    help=f"time budget in seconds (default {DEFAULT_SECONDS:g} unless --max-examples is given)")
     p.add_argument("--max-examples", type=int, metavar="N", help="stop after N examples")
@@ -694,10 +695,11 @@ def print_disagreement(d: Disagreement, fuzzees: Sequence[Fuzzee], out: TextIO) 
 
 
 def run_fuzz(args: argparse.Namespace) -> int:
-    from .runner import impl_argv
+    from .runner import ALL, BUNDLED_IMPLS, impl_argv
     from .testee import split_command
 
-    commands: list[tuple[str | None, list[str]]] = [(name, impl_argv(name)) for name in args.impl]
+    names = [n for name in args.impl for n in (BUNDLED_IMPLS if name == ALL else [name])]
+    commands: list[tuple[str | None, list[str]]] = [(name, impl_argv(name)) for name in dict.fromkeys(names)]
     try:
         commands += [(None, split_command(cmd)) for cmd in args.testee]
     except Exception as e:  # noqa: BLE001 - TesteeStartError from a command that does not split

@@ -29,7 +29,7 @@ from typing import Any, Callable, Sequence, TextIO
 from . import report
 from .errors import UsageError
 from .paths import ROOT
-from .report import ERROR, FAIL, PASS, SKIP, XFAIL, XPASS, Result
+from .report import ERROR, FAIL, PASS, SKIP, STATUSES, XFAIL, XPASS, Result
 from .testee import (
     DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response,
 )
@@ -43,11 +43,17 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
     "construct": [sys.executable, str(TESTEES / "construct_testee.py")],
     "kaitai-python": [sys.executable, str(TESTEES / "kaitai_python_testee.py")],
     "js": ["node", str(TESTEES / "javascript" / "testee.js")],
-    "java": ["java", "-Xss8m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1",
+    "java": ["java", "-Xss8m", "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1", "-Xmx256m",
+             "-XX:ReservedCodeCacheSize=64m", "-XX:CompressedClassSpaceSize=64m", "-XX:MaxMetaspaceSize=128m",
              "-jar", str(TESTEES / "java" / "target" / "osdk-java-testee.jar")],
     "go": [str(TESTEES / "go" / "bin" / "osdk-go-testee")],
     "c": [str(TESTEES / "c" / "build" / "osdk-c-testee")],
 }
+# Address-space limits other than the default, for runtimes that reserve
+# more virtual memory than they use.
+BUNDLED_MEMORY_MB: dict[str, int] = {}
+ALL = "all"
+FAILURE_LISTS = ROOT / "conformance" / "failure_lists"
 # What a built implementation needs on disk, and how to get it.
 BUILD_HINT = "run `make setup` (it builds every bundled testee)"
 
@@ -65,6 +71,12 @@ def impl_argv(name: str) -> list[str]:
 
 
 # ---- failure list ----------------------------------------------------------------
+
+def default_failure_list(impl: str) -> Path:
+    """A bundled implementation's reviewed failure list, used when present
+    (protobuf style: every line names a case and says why it fails)."""
+    return FAILURE_LISTS / f"{impl}.txt"
+
 
 def read_failure_list(path: str | os.PathLike) -> dict[str, int]:
     """case id -> line number, from a failure list file."""
@@ -323,7 +335,12 @@ def run_command(args: argparse.Namespace) -> int:
         raise UsageError("--memory-mb must be 0 (no limit) or a positive number of MiB")
     _check_writable(args.junit, "--junit")
     _check_writable(args.html, "--html")
+    if args.impl == ALL:
+        return run_all(args)
+    _check_writable(args.summary_json, "--summary-json")
     argv = impl_argv(args.impl) if args.impl else args.testee
+    if args.failure_list is None and args.impl and default_failure_list(args.impl).exists():
+        args.failure_list = str(default_failure_list(args.impl))
     listed = read_failure_list(args.failure_list) if args.failure_list else {}
 
     all_cases, compare = _load_cases(args.vectors)
@@ -335,7 +352,7 @@ def run_command(args: argparse.Namespace) -> int:
         raise UsageError("no vector matches the --profile / --filter selection")
 
     timeout = args.timeout if args.timeout is not None else DEFAULT_TIMEOUT
-    memory_mb = args.memory_mb if args.memory_mb is not None else DEFAULT_MEMORY_MB
+    memory_mb = args.memory_mb if args.memory_mb is not None else BUNDLED_MEMORY_MB.get(args.impl, DEFAULT_MEMORY_MB)
     try:
         testee = Testee(argv, timeout=timeout, memory_mb=memory_mb)
         testee.start()
@@ -389,6 +406,12 @@ def run_command(args: argparse.Namespace) -> int:
         if args.html:
             appendix = {"testee standard error (end)": outcome.testee_stderr} if outcome.testee_stderr else None
             report.write_html(args.html, results, f"OPEN protocol conformance: {name}", meta, appendix=appendix)
+        if args.summary_json:
+            summary = {"impl": args.impl, "testee": name, "command": " ".join(testee.argv),
+                       "cases": len(cases), "seconds": round(outcome.seconds, 1),
+                       "statuses": {st: sum(r.status == st for r in results) for st in STATUSES},
+                       "failure_list": args.failure_list, "conforms": ok}
+            Path(args.summary_json).write_text(json.dumps(summary, indent=1) + "\n")
     except OSError as e:
         raise UsageError(f"cannot write a report: {e.strerror or e}") from None
     verdict = "CONFORMS" if ok else "DOES NOT CONFORM"
@@ -401,7 +424,9 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--testee", metavar="COMMAND",
                        help="command that starts the implementation under test (split like a shell does)")
-    which.add_argument("--impl", choices=sorted(BUNDLED_IMPLS), help="a bundled implementation")
+    which.add_argument("--impl", choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
+                       help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}), or {ALL} for every one "
+                            "(reports in --report-dir)")
     p.add_argument("--profile", action="append", choices=profiles, metavar="PROFILE",
                    help=f"only this profile (repeatable; one of {', '.join(profiles)}); "
                         "cases without a profile always run")
@@ -417,3 +442,92 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     p.add_argument("--vectors", action="append", metavar="FILE",
                    help="vector file(s) to use instead of vectors/*.json (repeatable)")
     p.add_argument("--no-progress", action="store_true", help="no progress output on stderr")
+    p.add_argument("--summary-json", metavar="FILE", help="write the run's counts and verdict as JSON")
+    p.add_argument("--report-dir", metavar="DIR", default=str(ROOT / "reports"),
+                   help="with --impl all: where each implementation's JUnit, HTML, log and summary go, "
+                        "and conformance.json (default: reports/)")
+    p.add_argument("--jobs", type=int, metavar="N", default=os.cpu_count() or 1,
+                   help="with --impl all: implementations run at once (default: the number of CPUs)")
+
+
+# ---- every bundled implementation ---------------------------------------------------
+
+def _forwarded(args: argparse.Namespace) -> list[str]:
+    """The options of this run that each per-implementation run repeats."""
+    out: list[str] = []
+    for p in args.profile or []:
+        out += ["--profile", p]
+    for v in args.vectors or []:
+        out += ["--vectors", v]
+    if args.filter:
+        out += ["--filter", args.filter]
+    if args.timeout is not None:
+        out += ["--timeout", str(args.timeout)]
+    return out
+
+
+def status_table(summaries: list[dict]) -> str:
+    cols = ("pass", "fail", "xfail", "xpass", "skip", "error")
+    head = f"{'implementation':<15} {'cases':>6} " + " ".join(f"{c:>6}" for c in cols) + f" {'seconds':>8}  verdict"
+    lines = [head, "-" * len(head)]
+    for s in summaries:
+        st = s.get("statuses") or {}
+        verdict = "CONFORMS" if s.get("conforms") else s.get("problem") or "DOES NOT CONFORM"
+        lines.append(f"{s['impl']:<15} {s.get('cases', 0):>6} " + " ".join(f"{st.get(c, 0):>6}" for c in cols)
+                     + f" {s.get('seconds', 0):>8.1f}  {verdict}")
+    return "\n".join(lines)
+
+
+def run_all(args: argparse.Namespace) -> int:
+    """Every bundled implementation, `--jobs` at a time, each in its own
+    `osdkc run` process (the runner's judging is CPU-bound Python, so
+    processes, not threads, use the cores). One table at the end; each
+    run's JUnit, HTML, log and summary in --report-dir, and
+    conformance.json with every summary (generated/README.md's status is
+    rendered from it)."""
+    if args.testee or args.failure_list or args.junit or args.html or args.summary_json:
+        raise UsageError("--impl all writes its reports to --report-dir; --failure-list, --junit, --html and "
+                         "--summary-json apply to a single implementation")
+    if args.jobs < 1:
+        raise UsageError("--jobs must be at least 1")
+    out_dir = Path(args.report_dir)
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise UsageError(f"--report-dir {out_dir}: {e.strerror or e}") from None
+    import subprocess
+    from concurrent.futures import ThreadPoolExecutor
+
+    def one(impl: str) -> dict:
+        summary_path = out_dir / f"{impl}.json"
+        summary_path.unlink(missing_ok=True)
+        cmd = [sys.executable, "-m", "osdk_conformance.cli", "run", "--impl", impl, "--no-progress",
+               "--junit", str(out_dir / f"{impl}.xml"), "--html", str(out_dir / f"{impl}.html"),
+               "--summary-json", str(summary_path), *_forwarded(args)]
+        with open(out_dir / f"{impl}.log", "w", encoding="utf-8") as log:
+            code = subprocess.run(cmd, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL).returncode
+        try:
+            summary = json.loads(summary_path.read_text())
+        except (OSError, ValueError):
+            last = (out_dir / f"{impl}.log").read_text(errors="replace").strip().splitlines()[-1:]
+            summary = {"impl": impl, "conforms": False, "problem": f"exit {code}: {last[0] if last else 'no output'}"}
+        summary["exit"] = code
+        return summary
+
+    start = time.monotonic()
+    print(f"osdkc run --impl all: {len(BUNDLED_IMPLS)} implementations, {args.jobs} at a time", flush=True)
+    with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        summaries = list(pool.map(one, BUNDLED_IMPLS))
+    seconds = time.monotonic() - start
+    ok = all(s.get("conforms") and s.get("exit") == 0 for s in summaries)
+    print(status_table(summaries))
+    for s in summaries:
+        if not (s.get("conforms") and s.get("exit") == 0):
+            print(f"{s['impl']}: see {out_dir / (s['impl'] + '.log')}")
+    selection = " ".join(_forwarded(args)) or None
+    (out_dir / "conformance.json").write_text(json.dumps(
+        {"seconds": round(seconds, 1), "jobs": args.jobs, "selection": selection, "implementations": summaries},
+        indent=1) + "\n")
+    print(f"\nreports: {out_dir}/  ({seconds:.1f} s)")
+    print("ALL CONFORM" if ok else "NOT ALL CONFORM")
+    return 0 if ok else 1

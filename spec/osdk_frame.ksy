@@ -119,8 +119,8 @@ types:
         if: not _parent.is_ack
         doc: Command id within the set.
       - id: value
-        # .as<u1>: the Go target passes the enum untyped otherwise
-        type: osdk_payload(cmd_set.to_i.as<u1>, cmd_id, false, _root.profile)
+        # the number read again: Java keeps an enum value without a name as null
+        type: osdk_payload(cmd_set_code, cmd_id, false, _root.profile)
         size-eos: true
         if: not _parent.is_ack
         doc: The command's value, typed by set and id.
@@ -130,6 +130,12 @@ types:
         doc: |
           An ACK's value, raw: only the command it answers (matched by SEQ)
           says its type; decode it with osdk_payload(set, id, true, profile).
+    instances:
+      cmd_set_code:
+        pos: 0
+        type: u1
+        if: not _parent.is_ack
+        doc: The command set byte as a number, named by the enum or not.
 enums:
   encryption:
     0:

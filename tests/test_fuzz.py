@@ -46,10 +46,15 @@ def test_bundled_implementations_agree():
     # disagreement (two header rules broken at once: aa0c0020200000000000892c);
     # it was settled in docs/VALUE-MODEL.md (wire order) and pinned by the
     # vector frames.*.header_only.ack_session0.enc1.
-    proc = osdkc("fuzz", "--impl", "construct", "--impl", "kaitai-python", "--max-examples", "300", "--seed", "11")
+    # Every bundled implementation, every language, on the operations they
+    # all support.
+    proc = osdkc("fuzz", "--impl", "all", "--max-examples", "300", "--seed", "11")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "no disagreement" in proc.stderr and "Traceback" not in proc.stderr
     assert "300 examples in" in proc.stderr
+    from osdk_conformance.runner import BUNDLED_IMPLS
+
+    assert proc.stderr.count(" vs ") == len(BUNDLED_IMPLS) - 1
     for op in FUZZ_OPS:  # the summary gives a rate for every operation
         assert op in proc.stderr
 

@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
-import time
 from pathlib import Path
 from xml.etree import ElementTree as ET
 
@@ -61,19 +60,50 @@ def junit(path: Path) -> ET.Element:
 
 # ---- the bundled implementations conform ----------------------------------------
 
-@pytest.mark.parametrize("impl", ["construct", "kaitai-python"])
-def test_bundled_implementation_conforms(impl, tmp_path):
-    xml, page = tmp_path / "r.xml", tmp_path / "r.html"
-    t0 = time.monotonic()
-    proc = osdkc("run", "--impl", impl, "--no-progress", "--junit", str(xml), "--html", str(page))
-    took = time.monotonic() - t0
-    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-2000:]
-    assert "CONFORMS" in proc.stdout and "Traceback" not in proc.stderr
-    root = junit(xml)
-    assert root.get("failures") == "0" and root.get("errors") == "0"
-    assert int(root.get("tests")) > 0
-    assert "CONFORMS" in page.read_text()
-    assert took < 120, f"{impl}: {took:.0f} s"
+def test_every_bundled_implementation_conforms(tmp_path):
+    # One `--impl all` run: every language, each in its own process, with
+    # empty failure lists (or reviewed ones in conformance/failure_lists/).
+    from osdk_conformance.runner import BUNDLED_IMPLS
+
+    proc = osdkc("run", "--impl", "all", "--jobs", "2", "--report-dir", str(tmp_path), timeout=1200)
+    assert proc.returncode == 0, proc.stdout[-6000:] + proc.stderr[-2000:]
+    assert "ALL CONFORM" in proc.stdout and "Traceback" not in proc.stderr
+    status = json.loads((tmp_path / "conformance.json").read_text())
+    assert [s["impl"] for s in status["implementations"]] == list(BUNDLED_IMPLS)
+    for s in status["implementations"]:
+        assert s["conforms"] and s["exit"] == 0
+        assert s["statuses"]["pass"] > 0 and s["statuses"]["fail"] == 0, s
+        root = junit(tmp_path / f"{s['impl']}.xml")
+        assert root.get("failures") == "0" and root.get("errors") == "0"
+        assert int(root.get("tests")) == s["cases"]
+        assert "CONFORMS" in (tmp_path / f"{s['impl']}.html").read_text()
+    # every decoding operation is complete in every language: only the
+    # encode cases may be skipped (the Kaitai targets cannot serialise)
+    from osdk_conformance.vectors import load_cases
+
+    encode_cases = sum(c.operation.startswith("encode_") for c in load_cases())
+    for s in status["implementations"]:
+        assert s["statuses"]["skip"] in (0, encode_cases), s
+
+
+def test_status_section_of_generated_readme_is_rendered_from_a_run(tmp_path):
+    from osdk_conformance import status_readme
+
+    readme = tmp_path / "README.md"
+    readme.write_text(f"intro\n{status_readme.BEGIN}\nold\n{status_readme.END}\noutro\n")
+    status = {"seconds": 1.0, "jobs": 1, "selection": None, "implementations": [
+        {"impl": "go", "cases": 3, "conforms": True, "statuses": {"pass": 2, "skip": 1}},
+        {"impl": "c", "cases": 3, "conforms": False, "statuses": {"pass": 1, "fail": 2}}]}
+    path = tmp_path / "conformance.json"
+    path.write_text(json.dumps(status))
+    assert status_readme.update(path, readme)
+    text = readme.read_text()
+    assert "old" not in text and text.startswith("intro\n") and text.endswith("outro\n")
+    assert "| `go` |" in text and "| 2 | 0 | 0 | 1 | conforms |" in text
+    assert "| `c` |" in text and "**does not conform**" in text
+    status["selection"] = "--filter x"  # a partial run never overwrites the page
+    path.write_text(json.dumps(status))
+    assert not status_readme.update(path, readme)
 
 
 # ---- failure list ----------------------------------------------------------------------
@@ -145,10 +175,9 @@ def test_failure_list_syntax(tmp_path):
 def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, name, kind, extra):
     vec, ids = subset(cases, tmp_path, "decode_frame", 3)
     xml, page = tmp_path / "r.xml", tmp_path / "r.html"
-    t0 = time.monotonic()
+    # a hang here would hit the subprocess timeout and fail the test
     proc = osdkc("run", "--testee", command_for(name), "--vectors", str(vec), "--no-progress", "--junit", str(xml),
                  "--html", str(page), *extra, timeout=120)
-    assert time.monotonic() - t0 < 60
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "Traceback" not in proc.stderr
     assert f"{kind} {len(ids)}" in proc.stdout  # e.g. "testee failures: testee_timeout 3"

@@ -132,12 +132,29 @@ var OsdkFrame = (function() {
       if (!(this._parent.isAck)) {
         this._raw_value = this._io.readBytesFull();
         var _io__raw_value = new KaitaiStream(this._raw_value);
-        this.value = new OsdkPayload_.OsdkPayload(_io__raw_value, null, null, this.cmdSet, this.cmdId, false, this._root.profile);
+        this.value = new OsdkPayload_.OsdkPayload(_io__raw_value, null, null, this.cmdSetCode, this.cmdId, false, this._root.profile);
       }
       if (this._parent.isAck) {
         this.ackValue = this._io.readBytesFull();
       }
     }
+
+    /**
+     * The command set byte as a number, named by the enum or not.
+     */
+    Object.defineProperty(FrameData.prototype, 'cmdSetCode', {
+      get: function() {
+        if (this._m_cmdSetCode !== undefined)
+          return this._m_cmdSetCode;
+        if (!(this._parent.isAck)) {
+          var _pos = this._io.pos;
+          this._io.seek(0);
+          this._m_cmdSetCode = this._io.readU1();
+          this._io.seek(_pos);
+        }
+        return this._m_cmdSetCode;
+      }
+    });
 
     /**
      * Command set.

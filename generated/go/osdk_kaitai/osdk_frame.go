@@ -356,6 +356,8 @@ type OsdkFrame_FrameData struct {
 	_root *OsdkFrame
 	_parent *OsdkFrame
 	_raw_Value []byte
+	_f_cmdSetCode bool
+	cmdSetCode uint8
 }
 func NewOsdkFrame_FrameData() *OsdkFrame_FrameData {
 	return &OsdkFrame_FrameData{
@@ -393,22 +395,56 @@ func (this *OsdkFrame_FrameData) Read(io *kaitai.Stream, parent *OsdkFrame, root
 		tmp21 = tmp21
 		this._raw_Value = tmp21
 		_io__raw_Value := kaitai.NewStream(bytes.NewReader(this._raw_Value))
-		tmp22 := NewOsdkPayload(uint8(this.CmdSet), this.CmdId, false, this._root.Profile)
-		err = tmp22.Read(_io__raw_Value, nil, nil)
+		tmp22, err := this.CmdSetCode()
 		if err != nil {
 			return err
 		}
-		this.Value = tmp22
+		tmp23 := NewOsdkPayload(tmp22, this.CmdId, false, this._root.Profile)
+		err = tmp23.Read(_io__raw_Value, nil, nil)
+		if err != nil {
+			return err
+		}
+		this.Value = tmp23
 	}
 	if (this._parent.IsAck) {
-		tmp23, err := this._io.ReadBytesFull()
+		tmp24, err := this._io.ReadBytesFull()
 		if err != nil {
 			return err
 		}
-		tmp23 = tmp23
-		this.AckValue = tmp23
+		tmp24 = tmp24
+		this.AckValue = tmp24
 	}
 	return err
+}
+
+/**
+ * The command set byte as a number, named by the enum or not.
+ */
+func (this *OsdkFrame_FrameData) CmdSetCode() (v uint8, err error) {
+	if (this._f_cmdSetCode) {
+		return this.cmdSetCode, nil
+	}
+	this._f_cmdSetCode = true
+	if (!(this._parent.IsAck)) {
+		_pos, err := this._io.Pos()
+		if err != nil {
+			return 0, err
+		}
+		_, err = this._io.Seek(int64(0), io.SeekStart)
+		if err != nil {
+			return 0, err
+		}
+		tmp25, err := this._io.ReadU1()
+		if err != nil {
+			return 0, err
+		}
+		this.cmdSetCode = tmp25
+		_, err = this._io.Seek(_pos, io.SeekStart)
+		if err != nil {
+			return 0, err
+		}
+	}
+	return this.cmdSetCode, nil
 }
 
 /**

@@ -205,7 +205,7 @@ public class OsdkFrame extends KaitaiStruct {
             if (!(_parent().isAck())) {
                 this._raw_value = this._io.readBytesFull();
                 KaitaiStream _io__raw_value = new ByteBufferKaitaiStream(this._raw_value);
-                this.value = new OsdkPayload(_io__raw_value, ((Number) (cmdSet().id())).intValue(), cmdId(), false, _root().profile());
+                this.value = new OsdkPayload(_io__raw_value, cmdSetCode(), cmdId(), false, _root().profile());
             }
             if (_parent().isAck()) {
                 this.ackValue = this._io.readBytesFull();
@@ -222,6 +222,25 @@ public class OsdkFrame extends KaitaiStruct {
             }
             if (_parent().isAck()) {
             }
+            cmdSetCode();
+            if (this.cmdSetCode != null) {
+            }
+        }
+        private Integer cmdSetCode;
+
+        /**
+         * The command set byte as a number, named by the enum or not.
+         */
+        public Integer cmdSetCode() {
+            if (this.cmdSetCode != null)
+                return this.cmdSetCode;
+            if (!(_parent().isAck())) {
+                long _pos = this._io.pos();
+                this._io.seek(0);
+                this.cmdSetCode = this._io.readU1();
+                this._io.seek(_pos);
+            }
+            return this.cmdSetCode;
         }
         private CommandSet cmdSet;
         private Integer cmdId;

@@ -144,7 +144,7 @@ class OsdkFrame(KaitaiStruct):
                 pass
                 self._raw_value = self._io.read_bytes_full()
                 _io__raw_value = KaitaiStream(BytesIO(self._raw_value))
-                self.value = osdk_payload.OsdkPayload(int(self.cmd_set), self.cmd_id, False, self._root.profile, _io__raw_value)
+                self.value = osdk_payload.OsdkPayload(self.cmd_set_code, self.cmd_id, False, self._root.profile, _io__raw_value)
 
             if self._parent.is_ack:
                 pass
@@ -167,6 +167,25 @@ class OsdkFrame(KaitaiStruct):
             if self._parent.is_ack:
                 pass
 
+            _ = self.cmd_set_code
+            if hasattr(self, '_m_cmd_set_code'):
+                pass
+
+
+        @property
+        def cmd_set_code(self):
+            """The command set byte as a number, named by the enum or not."""
+            if hasattr(self, '_m_cmd_set_code'):
+                return self._m_cmd_set_code
+
+            if (not (self._parent.is_ack)):
+                pass
+                _pos = self._io.pos()
+                self._io.seek(0)
+                self._m_cmd_set_code = self._io.read_u1()
+                self._io.seek(_pos)
+
+            return getattr(self, '_m_cmd_set_code', None)
 
 
     @property

@@ -1,0 +1,100 @@
+package osdk.testee;
+
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import osdk_kaitai.OsdkFrame;
+import osdk_kaitai.OsdkPayload;
+
+/**
+ * The events of one decode_stream: Deframer boundaries, values from the
+ * generated parsers, and ACK matching. An ACK's value is typed by the
+ * command with the same session and SEQ seen earlier in the stream; at most
+ * PENDING_LIMIT unanswered commands are remembered, the oldest forgotten
+ * first.
+ */
+final class StreamDecoder {
+    static final int PENDING_LIMIT = 1024;
+
+    private final String profile;
+    // (session, seq) -> (cmd_set, cmd_id), in the order first seen
+    private final Map<Long, int[]> pending = new LinkedHashMap<>();
+
+    StreamDecoder(String profile) {
+        this.profile = profile;
+    }
+
+    Map<String, Object> event(Deframer.Event ev) {
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("offset", ev.offset);
+        switch (ev.kind) {
+            case GARBAGE:
+                out.put("kind", "garbage");
+                out.put("length", (long) ev.length);
+                return out;
+            case REJECTED:
+                return error(ev, ev.error, ev.detail);
+            default:
+                try {
+                    return frame(ev);
+                } catch (Rejection r) {
+                    return error(ev, r.cls, r.detail);
+                } catch (RuntimeException e) { // our bug must not cost the rest of the stream
+                    return error(ev, "undecodable", "internal error (" + e.getClass().getSimpleName() + ": "
+                            + Kaitai.oneLine(e.getMessage()) + ")");
+                }
+        }
+    }
+
+    private Map<String, Object> frame(Deframer.Event ev) throws Rejection {
+        OsdkFrame f = Operations.frame(ev.raw, profile);
+        Map<String, Object> model = ValueModel.of(f, ev.raw);
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("offset", ev.offset);
+        out.put("kind", "frame");
+        if (f.len() > Deframer.HEADER_LEN && f.data() instanceof OsdkFrame.FrameData) {
+            OsdkFrame.FrameData data = (OsdkFrame.FrameData) f.data();
+            long key = f.session() << 16 | f.seq();
+            if (f.isAck()) {
+                int[] cmd = pending.remove(key);
+                if (cmd != null) {
+                    String ackOf = Tables.INSTANCE.commandName(cmd[0], cmd[1]);
+                    out.put("ack_of", ackOf);
+                    byte[] value = data.ackValue();
+                    OsdkPayload ack;
+                    try {
+                        ack = Operations.payload(value, cmd[0], cmd[1], true, profile);
+                    } catch (Rejection r) {
+                        Map<String, Object> err = error(ev, r.cls, r.detail);
+                        err.put("ack_of", ackOf);
+                        return err;
+                    }
+                    out.put("ack", Operations.bodyModel(ack, value));
+                }
+            } else if (f.session() > 0) {
+                // the number, also for a command set the spec has no name for
+                @SuppressWarnings("unchecked")
+                Map<String, Object> cmdSet = (Map<String, Object>) ((Map<String, Object>) model.get("data")).get("cmd_set");
+                int set = (int) (long) (Long) cmdSet.get("value");
+                pending.put(key, new int[] {set, data.cmdId()});
+                if (pending.size() > PENDING_LIMIT) {
+                    Iterator<Long> oldest = pending.keySet().iterator();
+                    oldest.next();
+                    oldest.remove();
+                }
+            }
+        }
+        out.put("frame", model);
+        return out;
+    }
+
+    private static Map<String, Object> error(Deframer.Event ev, String cls, String detail) {
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("offset", ev.offset);
+        out.put("kind", "error");
+        out.put("error", cls);
+        out.put("detail", detail);
+        out.put("length", (long) ev.length);
+        return out;
+    }
+}
