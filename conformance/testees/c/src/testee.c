@@ -1,0 +1,835 @@
+/*
+ * testee.c - the bundled C testee: the generated decoder of generated/c/
+ * behind the testee protocol of conformance/PROTOCOL.md (JSON Lines on
+ * stdin/stdout).
+ *
+ * Layouts, enums, `valid` checks, error classes, the receiver (deframer),
+ * both CRCs, the JSON value model and the rule tables all come from the
+ * generated code. This file only reads requests, checks their arguments,
+ * matches ACKs to commands in a stream (the pending table) and applies
+ * the control-mode rules the tables hold. Request lines use the heap; the
+ * decoder does not.
+ */
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "jsonread.h"
+#include "osdk_crc.h"
+#include "osdk_decoder.h"
+#include "osdk_deframer.h"
+#include "osdk_model_json.h"
+#include "osdk_tables.h"
+
+#define TESTEE_NAME "osdk-c-generated"
+#define PENDING_LIMIT 1024 /* unanswered commands remembered for ACK matching */
+#define EVENT_BUF (1u << 20)
+
+static const char *const OPERATIONS[] = {
+    "decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
+    "encode_movement_control", "encode_frame",
+};
+
+/* ---- responses ----------------------------------------------------------------------- */
+
+typedef struct {
+    char *buf;
+    size_t cap;
+    osdk_json_t w;
+} response_t;
+
+static void emit_line(const char *text, size_t n)
+{
+    fwrite(text, 1, n, stdout);
+    fputc('\n', stdout);
+    fflush(stdout);
+}
+
+static void emit_error(const char *cls, const char *detail)
+{
+    char buf[1024];
+    osdk_json_t w;
+    osdk_json_init(&w, buf, sizeof buf);
+    osdk_json_begin_object(&w);
+    osdk_json_key(&w, "ok");
+    osdk_json_bool(&w, false);
+    osdk_json_key(&w, "error");
+    osdk_json_string(&w, cls);
+    osdk_json_key(&w, "detail");
+    osdk_json_string(&w, detail);
+    osdk_json_end_object(&w);
+    if (w.overflow) {
+        static const char fallback[] = "{\"ok\": false, \"error\": \"internal_error\", \"detail\": \"overflow\"}";
+        emit_line(fallback, sizeof fallback - 1);
+        return;
+    }
+    emit_line(buf, w.len);
+}
+
+static void emit_unsupported(void)
+{
+    static const char text[] = "{\"ok\": false, \"unsupported\": true}";
+    emit_line(text, sizeof text - 1);
+}
+
+static void emit_decode_error(const osdk_error_t *err, const char *what)
+{
+    char detail[256];
+    snprintf(detail, sizeof detail, "%s: %s.%s failed at offset %lu", what, err->type ? err->type : "?",
+             err->field ? err->field : "?", (unsigned long)err->offset);
+    emit_error(osdk_status_name(err->status), detail);
+}
+
+/* Start {"ok": true, "result": ... ; the caller writes the result object. */
+static bool response_begin(response_t *r, size_t cap)
+{
+    r->cap = cap;
+    r->buf = malloc(cap);
+    if (!r->buf) return false;
+    osdk_json_init(&r->w, r->buf, cap);
+    osdk_json_begin_object(&r->w);
+    osdk_json_key(&r->w, "ok");
+    osdk_json_bool(&r->w, true);
+    osdk_json_key(&r->w, "result");
+    return true;
+}
+
+static void response_end(response_t *r)
+{
+    osdk_json_end_object(&r->w);
+    if (r->w.overflow) emit_error("internal_error", "response too large for the buffer");
+    else emit_line(r->buf, r->w.len);
+    free(r->buf);
+    r->buf = NULL;
+}
+
+/* ---- arguments ------------------------------------------------------------------------- */
+
+typedef struct {
+    char detail[256];
+} bad_t;
+
+static bool bad(bad_t *b, const char *fmt, const char *key)
+{
+    snprintf(b->detail, sizeof b->detail, fmt, key);
+    return false;
+}
+
+static bool arg_int(const jv_t *req, const char *key, int64_t lo, int64_t hi, int64_t *out, bad_t *b)
+{
+    const jv_t *v = jv_get(req, key);
+    if (!v) return bad(b, "missing argument '%s'", key);
+    if (v->kind == JV_BOOL) return bad(b, "argument '%s' must not be a boolean", key);
+    if (v->kind != JV_NUMBER || !v->is_int) return bad(b, "argument '%s' has the wrong type", key);
+    if (v->int_overflow || v->i < lo || v->i > hi) return bad(b, "argument '%s' is out of range", key);
+    *out = v->i;
+    return true;
+}
+
+static bool arg_bool(const jv_t *req, const char *key, bool *out, bad_t *b)
+{
+    const jv_t *v = jv_get(req, key);
+    if (!v) return bad(b, "missing argument '%s'", key);
+    if (v->kind != JV_BOOL) return bad(b, "argument '%s' has the wrong type", key);
+    *out = v->boolean;
+    return true;
+}
+
+static int hexval(char c)
+{
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+/* A hex string of whole bytes; *out is malloc'ed (at least 1 byte). */
+static bool arg_hex(const jv_t *req, const char *key, uint8_t **out, size_t *len, bad_t *b)
+{
+    const jv_t *v = jv_get(req, key);
+    size_t i, n;
+    uint8_t *buf;
+    if (!v) return bad(b, "missing argument '%s'", key);
+    if (v->kind != JV_STRING) return bad(b, "argument '%s' has the wrong type", key);
+    if (v->len % 2) return bad(b, "argument '%s' is not a hex string of whole bytes", key);
+    n = v->len / 2;
+    buf = malloc(n ? n : 1);
+    if (!buf) return bad(b, "out of memory reading '%s'", key);
+    for (i = 0; i < n; i++) {
+        int hi = hexval(v->str[2 * i]), lo = hexval(v->str[2 * i + 1]);
+        if (hi < 0 || lo < 0) {
+            free(buf);
+            return bad(b, "argument '%s' is not a hex string of whole bytes", key);
+        }
+        buf[i] = (uint8_t)(hi << 4 | lo);
+    }
+    *out = buf;
+    *len = n;
+    return true;
+}
+
+static bool arg_f32(const jv_t *req, const char *key, uint32_t *bits, bad_t *b)
+{
+    const jv_t *v = jv_get(req, key);
+    const jv_t *s;
+    size_t i;
+    uint32_t x = 0;
+    if (!v) return bad(b, "missing argument '%s'", key);
+    if (v->kind != JV_OBJECT) return bad(b, "argument '%s' has the wrong type", key);
+    s = jv_get(v, "f32");
+    if (!s || s->kind != JV_STRING || s->len < 3 || s->len > 10 || s->str[0] != '0' || s->str[1] != 'x')
+        return bad(b, "argument '%s' must be {\"f32\": \"0x........\"}", key);
+    for (i = 2; i < s->len; i++) {
+        int h = hexval(s->str[i]);
+        if (h < 0) return bad(b, "argument '%s' must be {\"f32\": \"0x........\"}", key);
+        x = x << 4 | (uint32_t)h;
+    }
+    *bits = x;
+    return true;
+}
+
+/* ---- shared pieces ------------------------------------------------------------------------ */
+
+static char *g_event_buf;    /* one event's / one model's JSON */
+static osdk_frame_t g_frame; /* large structs live here, not on the stack */
+static osdk_payload_t g_payload;
+
+static void err_detail(char *out, size_t cap, const osdk_error_t *err)
+{
+    snprintf(out, cap, "%s.%s failed at offset %lu", err->type ? err->type : "?", err->field ? err->field : "?",
+             (unsigned long)err->offset);
+}
+
+/* ---- decode_payload / decode_frame ---------------------------------------------------------------- */
+
+static void op_decode_payload(const jv_t *req, int profile)
+{
+    bad_t b;
+    uint8_t *data = NULL;
+    size_t len = 0;
+    int64_t cmd_set, cmd_id;
+    bool is_ack;
+    osdk_error_t err;
+    response_t r;
+    if (!arg_hex(req, "hex", &data, &len, &b) || !arg_int(req, "cmd_set", 0, 255, &cmd_set, &b) ||
+        !arg_int(req, "cmd_id", 0, 255, &cmd_id, &b) || !arg_bool(req, "is_ack", &is_ack, &b)) {
+        free(data);
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    if (osdk_payload_decode(data, len, (uint8_t)cmd_set, (uint8_t)cmd_id, is_ack, osdk_profile_enum_values[profile],
+                            &g_payload, &err) != OSDK_OK) {
+        emit_decode_error(&err, "payload");
+        free(data);
+        return;
+    }
+    if (!response_begin(&r, (1u << 20) + 8 * len)) {
+        emit_error("internal_error", "out of memory");
+        free(data);
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "value");
+    osdk_payload_field_to_json(&g_payload, "body", &r.w);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+    free(data);
+}
+
+static void op_decode_frame(const jv_t *req, int profile)
+{
+    bad_t b;
+    uint8_t *data = NULL;
+    size_t len = 0;
+    char detail[256];
+    osdk_status_t st;
+    osdk_error_t err;
+    response_t r;
+    if (!arg_hex(req, "hex", &data, &len, &b)) {
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    st = osdk_frame_problem(data, len, detail, sizeof detail);
+    if (st != OSDK_OK) {
+        emit_error(osdk_status_name(st), detail);
+        free(data);
+        return;
+    }
+    if (osdk_frame_decode(data, len, osdk_profile_enum_values[profile], &g_frame, &err) != OSDK_OK) {
+        emit_decode_error(&err, "frame");
+        free(data);
+        return;
+    }
+    if (!response_begin(&r, (1u << 20) + 8 * len)) {
+        emit_error("internal_error", "out of memory");
+        free(data);
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "frame");
+    osdk_frame_to_json(&g_frame, &r.w);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+    free(data);
+}
+
+/* ---- control mode ------------------------------------------------------------------------------------- */
+
+static void op_classify(const jv_t *req, int profile)
+{
+    bad_t b;
+    int64_t byte;
+    uint8_t one;
+    osdk_control_mode_t mode;
+    osdk_error_t err;
+    response_t r;
+    int comb;
+    if (!arg_int(req, "byte", 0, 255, &byte, &b)) {
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    one = (uint8_t)byte;
+    if (osdk_control_mode_decode(&one, 1, &mode, &err) != OSDK_OK) {
+        emit_decode_error(&err, "control mode");
+        return;
+    }
+    if (!response_begin(&r, 1u << 16)) {
+        emit_error("internal_error", "out of memory");
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "fields");
+    osdk_control_mode_to_json(&mode, &r.w);
+    osdk_json_key(&r.w, "classification");
+    osdk_json_string(&r.w, osdk_mode_class_names[osdk_mode_class[profile][one]]);
+    osdk_json_key(&r.w, "combination");
+    comb = osdk_mode_combination[profile][one];
+    if (comb < 0) osdk_json_null(&r.w);
+    else osdk_json_int(&r.w, comb);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+}
+
+/* Which range each setpoint is checked against (PROTOCOL.md check_movement_control). */
+static const struct {
+    const char *name;
+    osdk_axis_t axis;
+} SETPOINTS[4] = {{"x", OSDK_AXIS_HORIZONTAL}, {"y", OSDK_AXIS_HORIZONTAL}, {"z", OSDK_AXIS_VERTICAL},
+                  {"yaw", OSDK_AXIS_YAW}};
+
+static void op_check_movement(const jv_t *req, int profile)
+{
+    bad_t b;
+    uint8_t *data = NULL;
+    size_t len = 0;
+    osdk_error_t err;
+    response_t r;
+    const osdk_movement_control_t *mc;
+    const osdk_f32_t *values[4];
+    uint8_t byte;
+    int comb, i;
+    char detail[256];
+    if (!arg_hex(req, "hex", &data, &len, &b)) {
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    /* as a command value: the movement control command's payload, trailing-bytes check included */
+    if (osdk_payload_decode(data, len, 0x01, 0x03, false, osdk_profile_enum_values[profile], &g_payload, &err) !=
+        OSDK_OK) {
+        emit_decode_error(&err, "movement control");
+        free(data);
+        return;
+    }
+    if (g_payload.body.tag != OSDK_PAYLOAD_BODY_OSDK_MOVEMENT_CONTROL) {
+        emit_error("undecodable", "the payload is not a movement control value");
+        free(data);
+        return;
+    }
+    mc = &g_payload.body.u.osdk_movement_control;
+    byte = data[0];
+    free(data);
+    if (osdk_mode_class[profile][byte] != OSDK_MODE_DOCUMENTED) {
+        snprintf(detail, sizeof detail, "mode byte 0x%02x is %s on %s", (unsigned)byte,
+                 osdk_mode_class_names[osdk_mode_class[profile][byte]], osdk_profile_ids[profile]);
+        emit_error("undefined_mode", detail);
+        return;
+    }
+    comb = osdk_mode_combination[profile][byte];
+    values[0] = &mc->x;
+    values[1] = &mc->y;
+    values[2] = &mc->z;
+    values[3] = &mc->yaw;
+    for (i = 0; i < 4; i++) {
+        const osdk_range_t *lim = &osdk_ranges[profile][comb][SETPOINTS[i].axis];
+        uint32_t bits = values[i]->bits;
+        double v = (double)values[i]->value;
+        bool nonfinite = ((bits >> 23) & 0xffu) == 0xffu;
+        if (nonfinite || (lim->has_min && v < lim->min) || (lim->has_max && v > lim->max)) {
+            snprintf(detail, sizeof detail, "%s (f32 0x%08lx) is outside the %s range", SETPOINTS[i].name,
+                     (unsigned long)bits, osdk_axis_names[SETPOINTS[i].axis]);
+            emit_error("out_of_range", detail);
+            return;
+        }
+    }
+    if (!response_begin(&r, 1u << 16)) {
+        emit_error("internal_error", "out of memory");
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "value");
+    osdk_movement_control_to_json(mc, &r.w);
+    osdk_json_key(&r.w, "combination");
+    osdk_json_int(&r.w, comb);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+}
+
+/* ---- decode_stream ------------------------------------------------------------------------------------ */
+
+typedef struct {
+    uint8_t session;
+    uint16_t seq;
+    uint8_t cmd_set;
+    uint8_t cmd_id;
+} pending_t;
+
+typedef struct {
+    int profile;
+    bool first_event;
+    size_t count;
+    pending_t pending[PENDING_LIMIT + 1]; /* oldest first */
+} stream_ctx_t;
+
+static long pending_find(const stream_ctx_t *s, unsigned session, unsigned seq)
+{
+    size_t i;
+    for (i = 0; i < s->count; i++) {
+        if (s->pending[i].session == session && s->pending[i].seq == seq) return (long)i;
+    }
+    return -1;
+}
+
+static void pending_remove(stream_ctx_t *s, size_t i)
+{
+    memmove(&s->pending[i], &s->pending[i + 1], (s->count - i - 1) * sizeof s->pending[0]);
+    s->count--;
+}
+
+/* A command with an existing key keeps its place (as a Python dict does). */
+static void pending_put(stream_ctx_t *s, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id)
+{
+    long at = pending_find(s, session, seq);
+    if (at >= 0) {
+        s->pending[at].cmd_set = cmd_set;
+        s->pending[at].cmd_id = cmd_id;
+        return;
+    }
+    s->pending[s->count].session = session;
+    s->pending[s->count].seq = seq;
+    s->pending[s->count].cmd_set = cmd_set;
+    s->pending[s->count].cmd_id = cmd_id;
+    s->count++;
+    if (s->count > PENDING_LIMIT) pending_remove(s, 0);
+}
+
+static void write_event(stream_ctx_t *s, osdk_json_t *w)
+{
+    if (w->overflow) {
+        static const char fallback[] =
+            "{\"kind\": \"error\", \"error\": \"undecodable\", \"detail\": \"event too large\"}";
+        fputs(s->first_event ? "" : ", ", stdout);
+        fputs(fallback, stdout);
+    } else {
+        fputs(s->first_event ? "" : ", ", stdout);
+        fwrite(w->buf, 1, w->len, stdout);
+    }
+    s->first_event = false;
+}
+
+static void event_head(osdk_json_t *w, uint64_t offset, const char *kind)
+{
+    osdk_json_init(w, g_event_buf, EVENT_BUF);
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "offset");
+    osdk_json_uint(w, offset);
+    osdk_json_key(w, "kind");
+    osdk_json_string(w, kind);
+}
+
+static void frame_error(stream_ctx_t *s, const osdk_event_t *ev, const osdk_error_t *err, const char *ack_of)
+{
+    osdk_json_t w;
+    char detail[256];
+    err_detail(detail, sizeof detail, err);
+    event_head(&w, ev->offset, "error");
+    osdk_json_key(&w, "error");
+    osdk_json_string(&w, osdk_status_name(err->status));
+    osdk_json_key(&w, "detail");
+    osdk_json_string(&w, detail);
+    osdk_json_key(&w, "length");
+    osdk_json_uint(&w, ev->length);
+    if (ack_of) {
+        osdk_json_key(&w, "ack_of");
+        osdk_json_string(&w, ack_of);
+    }
+    osdk_json_end_object(&w);
+    write_event(s, &w);
+}
+
+static void on_frame(stream_ctx_t *s, const osdk_event_t *ev)
+{
+    osdk_error_t err;
+    osdk_json_t w;
+    const char *ack_of = NULL;
+    bool have_ack = false;
+    const char *command = NULL;
+    if (osdk_frame_decode(ev->raw, ev->length, osdk_profile_enum_values[s->profile], &g_frame, &err) != OSDK_OK) {
+        frame_error(s, ev, &err, NULL);
+        return;
+    }
+    if (g_frame.data_present && g_frame.data.tag == OSDK_FRAME_DATA_FRAME_DATA) {
+        const osdk_frame_frame_data_t *fd = &g_frame.data.u.frame_data;
+        if (g_frame.is_ack) {
+            long at = pending_find(s, g_frame.session, g_frame.seq);
+            if (at >= 0) {
+                pending_t p = s->pending[at];
+                pending_remove(s, (size_t)at);
+                ack_of = osdk_command_name(p.cmd_set, p.cmd_id);
+                if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, p.cmd_set, p.cmd_id, true,
+                                        osdk_profile_enum_values[s->profile], &g_payload, &err) != OSDK_OK) {
+                    frame_error(s, ev, &err, ack_of);
+                    return;
+                }
+                have_ack = true;
+            }
+        } else {
+            command = osdk_command_name(fd->cmd_set, fd->cmd_id);
+            if (g_frame.session > 0) pending_put(s, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
+        }
+    }
+    event_head(&w, ev->offset, "frame");
+    if (command) {
+        osdk_json_key(&w, "command");
+        osdk_json_string(&w, command);
+    }
+    if (ack_of) {
+        osdk_json_key(&w, "ack_of");
+        osdk_json_string(&w, ack_of);
+    }
+    if (have_ack) {
+        osdk_json_key(&w, "ack");
+        osdk_payload_field_to_json(&g_payload, "body", &w);
+    }
+    osdk_json_key(&w, "frame");
+    osdk_frame_to_json(&g_frame, &w);
+    osdk_json_end_object(&w);
+    write_event(s, &w);
+}
+
+static void on_event(void *user, const osdk_event_t *ev)
+{
+    stream_ctx_t *s = user;
+    osdk_json_t w;
+    switch (ev->kind) {
+    case OSDK_EVENT_FRAME:
+        on_frame(s, ev);
+        return;
+    case OSDK_EVENT_GARBAGE:
+        event_head(&w, ev->offset, "garbage");
+        osdk_json_key(&w, "length");
+        osdk_json_uint(&w, ev->length);
+        osdk_json_end_object(&w);
+        write_event(s, &w);
+        return;
+    case OSDK_EVENT_ERROR:
+    default:
+        event_head(&w, ev->offset, "error");
+        osdk_json_key(&w, "error");
+        osdk_json_string(&w, osdk_status_name(ev->error));
+        osdk_json_key(&w, "detail");
+        osdk_json_string(&w, ev->detail ? ev->detail : "");
+        osdk_json_key(&w, "length");
+        osdk_json_uint(&w, ev->length);
+        osdk_json_end_object(&w);
+        write_event(s, &w);
+        return;
+    }
+}
+
+static stream_ctx_t g_stream;
+static uint8_t g_window[OSDK_DEFRAMER_MIN_BUFFER];
+
+static void op_decode_stream(const jv_t *req, int profile)
+{
+    bad_t b;
+    uint8_t *data = NULL;
+    size_t len = 0, pos = 0, i;
+    const jv_t *chunks;
+    osdk_deframer_t d;
+    if (!arg_hex(req, "hex", &data, &len, &b)) {
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    chunks = jv_get(req, "chunks");
+    if (!chunks) {
+        free(data);
+        emit_error("bad_request", "missing argument 'chunks'");
+        return;
+    }
+    if (chunks->kind != JV_ARRAY) {
+        free(data);
+        emit_error("bad_request", "argument 'chunks' has the wrong type");
+        return;
+    }
+    for (i = 0; i < chunks->count; i++) {
+        const jv_t *c = &chunks->items[i];
+        if (c->kind != JV_NUMBER || !c->is_int || c->i < 0) {
+            free(data);
+            emit_error("bad_request", "argument 'chunks' must be a list of non-negative integers");
+            return;
+        }
+    }
+    memset(&g_stream, 0, sizeof g_stream);
+    g_stream.profile = profile;
+    g_stream.first_event = true;
+    osdk_deframer_init(&d, g_window, sizeof g_window);
+    fputs("{\"ok\": true, \"result\": {\"events\": [", stdout);
+    /* reads of the given sizes; what they leave over arrives as one last read */
+    for (i = 0; i < chunks->count && pos < len; i++) {
+        uint64_t size = (uint64_t)chunks->items[i].i;
+        size_t n = size > (uint64_t)(len - pos) ? len - pos : (size_t)size;
+        osdk_deframer_feed(&d, data + pos, n, on_event, &g_stream);
+        pos += n;
+    }
+    if (pos < len) osdk_deframer_feed(&d, data + pos, len - pos, on_event, &g_stream);
+    osdk_deframer_finish(&d, on_event, &g_stream);
+    fputs("]}}\n", stdout);
+    fflush(stdout);
+    free(data);
+}
+
+/* ---- encoders ------------------------------------------------------------------------------------------- */
+
+static void hex_result(const uint8_t *bytes, size_t n)
+{
+    response_t r;
+    if (!response_begin(&r, (1u << 12) + 2 * n)) {
+        emit_error("internal_error", "out of memory");
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "hex");
+    osdk_json_hex(&r.w, bytes, n);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+}
+
+static void put_le(uint8_t *p, uint64_t v, unsigned n)
+{
+    unsigned i;
+    for (i = 0; i < n; i++) p[i] = (uint8_t)(v >> (8 * i));
+}
+
+static void op_encode_movement(const jv_t *req)
+{
+    static const char *const keys[4] = {"x", "y", "z", "yaw"};
+    bad_t b;
+    int64_t mode;
+    uint8_t out[17];
+    unsigned i;
+    if (!arg_int(req, "mode", 0, 255, &mode, &b)) {
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    out[0] = (uint8_t)mode;
+    for (i = 0; i < 4; i++) {
+        uint32_t bits;
+        if (!arg_f32(req, keys[i], &bits, &b)) {
+            emit_error("bad_request", b.detail);
+            return;
+        }
+        put_le(out + 1 + 4 * i, bits, 4);
+    }
+    hex_result(out, sizeof out);
+}
+
+static void op_encode_frame(const jv_t *req)
+{
+    bad_t b;
+    bool is_ack;
+    int64_t session, seq, cmd_set = 0, cmd_id = 0;
+    uint8_t *value = NULL;
+    size_t vlen = 0, data_len, frame_len, at;
+    uint8_t frame[OSDK_FRAME_MAX_LEN];
+    char detail[160];
+    if (!arg_bool(req, "is_ack", &is_ack, &b) || !arg_int(req, "session", 0, 31, &session, &b) ||
+        !arg_int(req, "seq", 0, 0xFFFF, &seq, &b) || !arg_hex(req, "value", &value, &vlen, &b)) {
+        free(value);
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    if (is_ack) {
+        if (jv_get(req, "cmd_set") || jv_get(req, "cmd_id")) {
+            free(value);
+            emit_error("bad_request", "an ACK frame has no cmd_set or cmd_id");
+            return;
+        }
+    } else if (!arg_int(req, "cmd_set", 0, 255, &cmd_set, &b) || !arg_int(req, "cmd_id", 0, 255, &cmd_id, &b)) {
+        free(value);
+        emit_error("bad_request", b.detail);
+        return;
+    }
+    data_len = vlen + (is_ack ? 0u : 2u);
+    if (data_len && (data_len > OSDK_FRAME_MAX_LEN || OSDK_FRAME_HEADER_LEN + data_len + 4u > OSDK_FRAME_MAX_LEN)) {
+        snprintf(detail, sizeof detail, "%lu bytes of DATA do not fit a frame of at most %u bytes",
+                 (unsigned long)data_len, (unsigned)OSDK_FRAME_MAX_LEN);
+        free(value);
+        emit_error("impossible_length", detail);
+        return;
+    }
+    if (is_ack && session == 0) {
+        free(value);
+        emit_error("bad_session", "an ACK frame cannot be in session 0");
+        return;
+    }
+    frame_len = data_len ? OSDK_FRAME_HEADER_LEN + data_len + 4u : OSDK_FRAME_HEADER_LEN;
+    memset(frame, 0, sizeof frame);
+    frame[0] = OSDK_FRAME_SOF;
+    put_le(frame + 1, frame_len, 2);          /* LEN (10 bits), VER 0 */
+    frame[3] = (uint8_t)(session | (is_ack ? 0x20 : 0)); /* SESSION, ACK, RES0 0 */
+    frame[4] = 0;                             /* PADDING 0, ENC plain */
+    put_le(frame + 8, (uint64_t)seq, 2);
+    put_le(frame + 10, osdk_crc16(frame, 10), 2);
+    at = OSDK_FRAME_HEADER_LEN;
+    if (!is_ack) {
+        frame[at++] = (uint8_t)cmd_set;
+        frame[at++] = (uint8_t)cmd_id;
+    }
+    if (vlen) memcpy(frame + at, value, vlen);
+    at += vlen;
+    if (data_len) {
+        put_le(frame + at, osdk_crc32(frame, at), 4);
+        at += 4;
+    }
+    free(value);
+    hex_result(frame, at);
+}
+
+/* ---- request loop ---------------------------------------------------------------------------------------- */
+
+static void op_capabilities(void)
+{
+    response_t r;
+    size_t i;
+    if (!response_begin(&r, 1u << 12)) {
+        emit_error("internal_error", "out of memory");
+        return;
+    }
+    osdk_json_begin_object(&r.w);
+    osdk_json_key(&r.w, "name");
+    osdk_json_string(&r.w, TESTEE_NAME);
+    osdk_json_key(&r.w, "operations");
+    osdk_json_begin_array(&r.w);
+    for (i = 0; i < sizeof OPERATIONS / sizeof OPERATIONS[0]; i++) osdk_json_string(&r.w, OPERATIONS[i]);
+    osdk_json_end_array(&r.w);
+    osdk_json_key(&r.w, "profiles");
+    osdk_json_begin_array(&r.w);
+    for (i = 0; i < OSDK_PROFILE_COUNT; i++) osdk_json_string(&r.w, osdk_profile_ids[i]);
+    osdk_json_end_array(&r.w);
+    osdk_json_end_object(&r.w);
+    response_end(&r);
+}
+
+static void answer(const char *line, size_t len)
+{
+    char err[160];
+    jv_t *req = jv_parse(line, len, err, sizeof err);
+    const jv_t *op, *prof;
+    int profile = -1;
+    if (!req) {
+        char detail[200];
+        snprintf(detail, sizeof detail, "not JSON: %s", err);
+        emit_error("bad_request", detail);
+        return;
+    }
+    op = jv_get(req, "op");
+    if (req->kind != JV_OBJECT || !op || op->kind != JV_STRING) {
+        emit_error("bad_request", "a request is a JSON object with an \"op\" string");
+        jv_free(req);
+        return;
+    }
+    prof = jv_get(req, "profile");
+    if (prof && prof->kind == JV_STRING && strlen(prof->str) == prof->len) profile = osdk_profile_index(prof->str);
+    if (strcmp(op->str, "capabilities") == 0) op_capabilities();
+    else if (strcmp(op->str, "encode_movement_control") == 0) op_encode_movement(req);
+    else if (strcmp(op->str, "encode_frame") == 0) op_encode_frame(req);
+    else if (profile < 0) emit_unsupported();
+    else if (strcmp(op->str, "decode_stream") == 0) op_decode_stream(req, profile);
+    else if (strcmp(op->str, "decode_frame") == 0) op_decode_frame(req, profile);
+    else if (strcmp(op->str, "decode_payload") == 0) op_decode_payload(req, profile);
+    else if (strcmp(op->str, "classify_control_mode") == 0) op_classify(req, profile);
+    else if (strcmp(op->str, "check_movement_control") == 0) op_check_movement(req, profile);
+    else emit_unsupported();
+    jv_free(req);
+}
+
+int main(void)
+{
+    char *line = NULL;
+    size_t cap = 0, len = 0;
+    int c;
+    g_event_buf = malloc(EVENT_BUF);
+    if (!g_event_buf) return 1;
+    for (;;) {
+        /* read one line of any length */
+        len = 0;
+        while ((c = getchar()) != EOF && c != '\n') {
+            if (len + 1 >= cap) {
+                size_t ncap = cap ? cap * 2 : 4096;
+                char *nl = realloc(line, ncap);
+                if (!nl) {
+                    free(line);
+                    free(g_event_buf);
+                    return 1;
+                }
+                line = nl;
+                cap = ncap;
+            }
+            line[len++] = (char)c;
+        }
+        if (len > 0) {
+            size_t k;
+            bool blank = true;
+            for (k = 0; k < len; k++) {
+                if (line[k] != ' ' && line[k] != '\t' && line[k] != '\r') {
+                    blank = false;
+                    break;
+                }
+            }
+            if (!blank) answer(line, len);
+        }
+        if (c == EOF) break;
+    }
+    free(line);
+    free(g_event_buf);
+    return 0;
+}
+
+/* Sanitizer builds: a finding aborts the process (the runner reports a
+ * testee_crash) instead of only printing. */
+#if defined(__SANITIZE_ADDRESS__)
+const char *__asan_default_options(void);
+const char *__asan_default_options(void)
+{
+    return "abort_on_error=1:detect_leaks=1";
+}
+#endif
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+const char *__ubsan_default_options(void);
+const char *__ubsan_default_options(void)
+{
+    return "halt_on_error=1:print_stacktrace=1";
+}
+#endif
