@@ -1,0 +1,90 @@
+"""The generated parsers in every language, beyond the vector replay of
+tests/test_runner.py (which runs `osdkc run --impl all`): each language's own
+unit tests, the C decoder under gcc and clang with warnings as errors, the
+sanitized C testee over every vector, and the libFuzzer smoke runs.
+
+The compiled testees are built by `make setup`; these tests rebuild what is
+missing with the same Makefiles, so they also run after a bare `pip install`.
+"""
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+TESTEES = ROOT / "conformance" / "testees"
+C_DIR = TESTEES / "c"
+CLANG = "clang-14"
+
+
+def make(directory: Path, *targets: str, timeout: float = 900, **variables: str) -> subprocess.CompletedProcess:
+    cmd = ["make", "--no-print-directory", "-C", str(directory), *targets, *(f"{k}={v}" for k, v in variables.items())]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+
+
+def osdkc(*args: str, timeout: float = 900) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", *args], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+def ok(proc: subprocess.CompletedProcess) -> str:
+    assert proc.returncode == 0, proc.stdout[-5000:] + proc.stderr[-5000:]
+    return proc.stdout + proc.stderr
+
+
+def test_c_unit_tests_pass_plain_and_under_asan_ubsan():
+    out = ok(make(C_DIR, "test"))
+    for name in ("test_crc", "test_deframer", "test_mode", "test_payload", "test_worked"):
+        assert f"== {name} (asan+ubsan)" in out
+    assert "runtime error" not in out and "AddressSanitizer" not in out
+
+
+@pytest.mark.parametrize("compiler", ["gcc", CLANG])
+def test_c_decoder_compiles_without_warnings(compiler, tmp_path):
+    if shutil.which(compiler) is None:
+        pytest.fail(f"{compiler} is not installed; `make setup` installs it (tools/apt-packages.sh)")
+    # -Werror: any warning fails the build
+    out = ok(make(C_DIR, f"{tmp_path}/osdk-c-testee", BUILD=str(tmp_path), CC=compiler))
+    assert "warning" not in out.lower()
+    assert (tmp_path / "osdk-c-testee").exists()
+
+
+def test_c_decoder_never_allocates():
+    # The decoder works on caller-supplied buffers only (the testee around
+    # it may allocate; the generated code may not).
+    for src in (ROOT / "generated" / "c").glob("*.[ch]"):
+        text = src.read_text()
+        for fn in ("malloc(", "calloc(", "realloc(", "free("):
+            assert fn not in text, f"{src.name} calls {fn[:-1]}"
+
+
+def test_sanitized_c_testee_conforms_over_every_vector(tmp_path):
+    ok(make(C_DIR, "sanitize"))
+    summary = tmp_path / "asan.json"
+    proc = osdkc("run", "--testee", str(C_DIR / "build" / "osdk-c-testee-asan"), "--no-progress",
+                 "--summary-json", str(summary))
+    out = ok(proc)
+    assert "CONFORMS" in out
+    assert "AddressSanitizer" not in out and "runtime error" not in out
+    statuses = json.loads(summary.read_text())["statuses"]
+    assert statuses["fail"] == 0 and statuses["error"] == 0 and statuses["pass"] > 30000
+
+
+def test_go_glue_unit_tests():
+    out = ok(make(TESTEES / "go", "test"))
+    assert "ok" in out
+
+
+@pytest.mark.slow
+def test_libfuzzer_smoke_runs_find_nothing():
+    # Both targets at once, 60 s each, seeded from vectors/. A finding makes
+    # libFuzzer exit non-zero and leaves the input in build/findings/.
+    proc = make(C_DIR, "-j2", "fuzz-smoke", FUZZ_SECONDS="60", timeout=600)
+    out = ok(proc)
+    assert out.count("stat::number_of_executed_units") == 2
+    assert "ERROR: libFuzzer" not in out and "AddressSanitizer" not in out

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Seed corpora for the coverage-guided fuzz targets, from the golden vectors.
+
+usage: tools/fuzz_corpus.py {deframer,broadcast} OUT_DIR [--limit N]
+
+deframer:  every decode_stream and decode_frame input, prefixed with the
+           byte the target reads first (profile and read size);
+broadcast: every broadcast value of a decode_payload case.
+One file per distinct input, named by its SHA-1, so reruns are idempotent.
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from osdk_conformance.vectors import load_cases  # noqa: E402
+
+PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")  # the order of osdk_profile_ids
+
+
+def seeds(target: str):
+    for case in load_cases():
+        inp = case.input if isinstance(case.input, dict) else {}
+        data = inp.get("hex")
+        if not isinstance(data, str):
+            continue
+        raw = bytes.fromhex(data)
+        if target == "deframer" and case.operation in ("decode_stream", "decode_frame"):
+            profile = PROFILES.index(case.profile) if case.profile in PROFILES else 0
+            yield bytes([(len(raw) % 64) << 2 | profile]) + raw
+        elif target == "broadcast" and case.operation == "decode_payload" and inp.get("cmd_set") == 2 \
+                and inp.get("cmd_id") == 0 and not inp.get("is_ack"):
+            yield raw
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("target", choices=("deframer", "broadcast"))
+    ap.add_argument("out", type=Path)
+    ap.add_argument("--limit", type=int, default=0, help="at most N seeds (0: all)")
+    args = ap.parse_args(argv)
+    args.out.mkdir(parents=True, exist_ok=True)
+    written = set()
+    for data in seeds(args.target):
+        name = hashlib.sha1(data).hexdigest()
+        if name in written:
+            continue
+        (args.out / name).write_bytes(data)
+        written.add(name)
+        if args.limit and len(written) >= args.limit:
+            break
+    print(f"fuzz_corpus: {len(written)} seeds for {args.target} in {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
