@@ -45,14 +45,17 @@ kit: setup
 	$(BIN)/osdkc kit
 
 # The whole suite; hypothesis runs its CI profile (10,000 examples per
-# message type in the differential test).
+# message type in the differential test). pytest-xdist spreads the test
+# files over the cores (a file's tests stay together, so its module
+# fixtures run once).
+JOBS ?= auto
 test: setup check-generated
 	$(BIN)/python tools/gen_vectors.py --check
-	$(BIN)/pytest -q
+	$(BIN)/pytest -q -n $(JOBS) --dist loadfile
 
 # A fast subset for development: no slow property tests, few examples.
 quick: setup
-	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow'
+	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow' -n $(JOBS) --dist loadfile
 
 clean:
 	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis

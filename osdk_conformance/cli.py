@@ -47,6 +47,24 @@ def _vectors(args: argparse.Namespace) -> int:
     return run_vectors(args)
 
 
+def _sim(args: argparse.Namespace) -> int:
+    from .sim import run_sim
+
+    return run_sim(args)
+
+
+def _device(args: argparse.Namespace) -> int:
+    from .device import run_device
+
+    return run_device(args)
+
+
+def _soak(args: argparse.Namespace) -> int:
+    from .soak import run_soak
+
+    return run_soak(args)
+
+
 def build_parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(
         prog="osdkc",
@@ -59,7 +77,7 @@ def build_parser() -> argparse.ArgumentParser:
     d.add_argument("--profile", required=True, choices=PROFILES, help="broadcast wire profile of the flight controller")
     src = d.add_mutually_exclusive_group(required=True)
     src.add_argument("--hex", help="the bytes as hex (spaces and colons allowed)")
-    src.add_argument("file", nargs="?", help="a file of raw bytes, or - for standard input")
+    src.add_argument("file", nargs="?", help="a file of raw bytes or a pcapng capture (osdkc device), or - for standard input")
     d.add_argument("--pretty", action="store_true", help="indent each JSON object")
     d.set_defaults(func=_decode)
 
@@ -100,6 +118,17 @@ def build_parser() -> argparse.ArgumentParser:
     fz = sub.add_parser("fuzz", help="differential fuzzing of two or more implementations (hypothesis)")
     fuzz.add_arguments(fz, PROFILES)
     fz.set_defaults(func=fuzz.run_fuzz)
+    from . import device, sim, soak  # standard library and osdk_conformance only until they run
+
+    sm = sub.add_parser("sim", help="simulated flight controller on a pseudo-terminal or TCP port")
+    sim.add_arguments(sm, PROFILES)
+    sm.set_defaults(func=_sim)
+    dv = sub.add_parser("device", help="acceptance suite against a flight controller on a serial port (or a capture)")
+    device.add_arguments(dv, PROFILES)
+    dv.set_defaults(func=_device)
+    sk = sub.add_parser("soak", help="benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost")
+    soak.add_arguments(sk, PROFILES)
+    sk.set_defaults(func=_soak)
     return ap
 
 

@@ -131,6 +131,26 @@ def read_chunks(stream: IO[bytes]) -> Iterator[bytes]:
         yield chunk
 
 
+def received_bytes(chunks: Iterable[bytes]) -> Iterator[bytes]:
+    """The chunks as they are, or, when they form a pcapng capture (osdkc
+    device --capture; detected by the Section Header Block magic), the bytes
+    received from the flight controller in capture order."""
+    from .capture import CaptureError, is_pcapng, parse_capture
+
+    it = iter(chunks)
+    first = next(it, b"")
+    if not is_pcapng(first):
+        if first:
+            yield first
+        yield from it
+        return
+    try:
+        cap = parse_capture(first + b"".join(it))
+    except CaptureError as e:
+        raise UsageError(str(e)) from None
+    yield from cap.received()
+
+
 def decode_events(chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
     decoder = Decoder(profile)
     for ev in deframe(chunks):
@@ -154,7 +174,7 @@ def run_decode(args: argparse.Namespace) -> int:
     errors = 0
     indent = 2 if args.pretty else None
     try:
-        for ev in decode_events(source, args.profile):
+        for ev in decode_events(received_bytes(source), args.profile):
             if ev["kind"] == "error":
                 errors += 1
             sys.stdout.write(model.dumps(ev, indent=indent) + "\n")

@@ -173,10 +173,13 @@ def _esc(value: Any) -> str:
 
 
 def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
-                appendix: dict[str, str] | None = None, max_cases: int = 2000) -> str:
+                appendix: dict[str, str] | None = None, max_cases: int = 2000,
+                extra_html: str | None = None) -> str:
     """A self-contained HTML page (no external assets, no scripts). Every
     case that did not pass is listed with its details, up to `max_cases`
-    (fail, xpass and error first); `appendix` adds titled text blocks."""
+    (fail, xpass and error first); `appendix` adds titled text blocks;
+    `extra_html` (trusted markup, e.g. inline SVG plots) goes after the
+    table by category."""
     by_cat = counts_by_category(results)
     total: Counter = Counter()
     for c in by_cat.values():
@@ -204,6 +207,9 @@ def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | No
             c[s] for s in (FAIL, XPASS, ERROR, XFAIL)) else _esc(cat)
         out.append(f"<tr><td>{name}</td>{''.join(cells)}<td>{sum(c.values())}</td></tr>")
     out.append("</tbody></table>")
+
+    if extra_html:
+        out.append(extra_html)
 
     order = {FAIL: 0, XPASS: 1, ERROR: 2, XFAIL: 3}
     not_passed = [r for r in results if r.status in order]
@@ -246,5 +252,5 @@ def write_junit(path: str | Path, results: Sequence[Result], suite_name: str,
 
 
 def write_html(path: str | Path, results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
-               appendix: dict[str, str] | None = None) -> None:
-    Path(path).write_text(html_report(results, title, meta, appendix), encoding="utf-8")
+               appendix: dict[str, str] | None = None, extra_html: str | None = None) -> None:
+    Path(path).write_text(html_report(results, title, meta, appendix, extra_html=extra_html), encoding="utf-8")

@@ -1,0 +1,361 @@
+"""What the acceptance suite measures in a received byte stream.
+
+`Analyzer` takes received (rx) and sent (tx) bytes with their times, live
+from a port or replayed from a capture, and keeps everything the checks
+need: link incidents (noise, CRC failures, frames cut short), decoded
+broadcast frames (flags, sequence numbers, arrival times, item times),
+value plausibility findings, attitude/velocity/position traces, ACKs of
+the commands sent, and "epochs": spans of time with one set of configured
+broadcast rates (profile defaults, then whatever an acknowledged set
+frequency command asked for). `checks.py`-style functions in device.py
+turn this into Results.
+"""
+from __future__ import annotations
+
+import math
+import threading
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from .deframe import HEADER_LEN, Deframer, Frame, Garbage, Rejected
+from .device_wire import open_frame
+from .sim import quaternion_to_euler
+
+HZ_OF_CODE = {0: 0, 1: 1, 2: 10, 3: 50, 4: 100}
+CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
+MAX_EXAMPLES = 5
+
+
+@dataclass
+class Epoch:
+    start: float
+    rates: dict[str, int]
+    source: str
+
+
+@dataclass
+class Finding:
+    """Violations of one value rule: how many, out of how many samples, first examples."""
+
+    samples: int = 0
+    count: int = 0
+    examples: list[str] = field(default_factory=list)
+
+    def add(self, ok: bool, example: str) -> None:
+        self.samples += 1
+        if not ok:
+            self.count += 1
+            if len(self.examples) < MAX_EXAMPLES:
+                self.examples.append(example)
+
+
+VALUE_RULES = ("quaternion_norm", "gps_health", "battery", "rc_channels", "flight_status", "time_stamp",
+               "control_info", "finite")
+
+
+class Analyzer:
+    def __init__(self, profile: str, key: bytes | None = None, expect_rates: dict[str, int] | None = None,
+                 flight_status_enum: str | None = None) -> None:
+        from osdk_construct.payload import osdk_payload
+
+        from .rules import default_rules
+
+        rules = default_rules()
+        self.rules = rules
+        self.profile_name = profile
+        self.prof = rules.profile(profile)
+        self.key = key
+        self._payload = osdk_payload
+        self._bcast = osdk_payload(2, 0, False, profile)
+        self.lock = threading.RLock()
+        self.ack_cond = threading.Condition(self.lock)
+        self.rx_deframer = Deframer()
+        self.tx_deframer = Deframer()
+        rates = dict(self.prof.default_rates_hz)
+        rates.update(expect_rates or {})
+        self.epochs: list[Epoch] = [Epoch(0.0, rates, "expected" if expect_rates else "profile defaults")]
+        self.first_t: float | None = None
+        self.last_t: float | None = None
+        self.rx_bytes = 0
+        self.rx_chunks: list[tuple[float, int]] = []   # arrival time, bytes
+        # link
+        self.frames = 0
+        self.incidents: list[tuple[float, str, int, str]] = []   # t, kind, bytes, detail
+        self._gap: list[Any] = []
+        self._gap_t = 0.0
+        self._last_end: int | None = None
+        self.leading_bytes = 0
+        # decode
+        self.decode_errors: dict[str, int] = {}
+        self.decode_examples: list[str] = []
+        self.undecoded_broadcasts: list[bytes] = []
+        self.encrypted_unopened = 0
+        # stream
+        self.bcast: list[tuple[float, int, int]] = []          # t, seq, flags
+        self.bcast_raw_prev: bytes | None = None
+        self.duplicates = 0
+        self.item_times: dict[str, list[float]] = {i: [] for i in self.prof.flag_bits}
+        self.cmd_frames: dict[str, int] = {}
+        # values
+        fs = rules.flight_status_enum(profile, flight_status_enum)
+        self.flight_status_values = fs
+        self.findings: dict[str, Finding] = {r: Finding() for r in VALUE_RULES}
+        self._prev_ticks: int | None = None
+        rc = rules.data["rc_channels"]["channels"]
+        self.rc_rules = rc
+        self.control_devices = rules.enum("control_device")
+        self.cur_modes = rules.enum("cur_mov_control_mode")
+        self.latest: dict[str, tuple[float, Any]] = {}
+        self.traces: dict[str, list[tuple]] = {"attitude": [], "velocity": [], "position": []}
+        # commands sent and their ACKs
+        self.sent: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        self.acks: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        self.on_broadcast: Callable[[float, Any], None] | None = None
+
+    # ---- input -----------------------------------------------------------
+
+    def feed_rx(self, t: float, chunk: bytes) -> None:
+        with self.lock:
+            if self.first_t is None:
+                self.first_t = t
+                self.epochs[0].start = t
+            self.last_t = t
+            self.rx_bytes += len(chunk)
+            self.rx_chunks.append((t, len(chunk)))
+            for ev in self.rx_deframer.feed(chunk):
+                self._rx_event(t, ev)
+
+    def feed_tx(self, t: float, chunk: bytes) -> None:
+        with self.lock:
+            for ev in self.tx_deframer.feed(chunk):
+                if isinstance(ev, Frame):
+                    op = open_frame(ev.raw, self.key)
+                    if not op.is_ack and op.cmd_set is not None and op.session > 0:
+                        self.sent[(op.session, op.seq)] = (t, op.cmd_set, op.cmd_id, op.value)
+
+    def finish(self, t: float | None = None) -> None:
+        with self.lock:
+            for ev in self.rx_deframer.finish():
+                if isinstance(ev, Rejected) and ev.error == "truncated_frame":
+                    continue   # the run ended in the middle of a frame: not the device's fault
+                self._rx_event(self.last_t or 0.0, ev)
+            self._close_gap(final=True)
+            if t is not None:
+                self.last_t = max(self.last_t or t, t)
+
+    # ---- link ------------------------------------------------------------
+
+    def _rx_event(self, t: float, ev) -> None:
+        if isinstance(ev, Frame):
+            if self._gap:
+                self._close_gap(end=ev.offset)
+            self._last_end = ev.offset + len(ev.raw)
+            self.frames += 1
+            self._frame(t, ev.raw)
+        else:
+            if not self._gap:
+                self._gap_t = t
+            self._gap.append(ev)
+
+    def _close_gap(self, end: int | None = None, final: bool = False) -> None:
+        gap, self._gap = self._gap, []
+        if not gap:
+            return
+        start = gap[0].offset
+        if end is None:
+            last = gap[-1]
+            end = last.offset + last.length
+        n = end - start
+        if self._last_end is None:
+            # bytes before the first good frame: the run joined the stream mid-frame
+            self.leading_bytes += n
+            return
+        first = gap[0]
+        if isinstance(first, Garbage):
+            kind, detail = "noise", f"{n} byte(s) outside any frame"
+        elif first.error == "bad_crc32":
+            if n < first.length:
+                kind, detail = "short", f"frame of LEN {first.length} interrupted after {n} byte(s) by the next frame"
+            else:
+                kind, detail = "crc", first.detail
+        elif n < HEADER_LEN:
+            kind, detail = "short", f"frame interrupted after {n} byte(s), inside its header"
+        elif first.error == "bad_crc16":
+            kind, detail = "crc", first.detail
+        elif first.error == "truncated_frame":
+            kind, detail = "short", first.detail
+        else:
+            kind, detail = "header", f"{first.error}: {first.detail}"
+        self.incidents.append((self._gap_t, kind, n, detail))
+
+    # ---- frames ----------------------------------------------------------
+
+    def _frame(self, t: float, raw: bytes) -> None:
+        op = open_frame(raw, self.key)
+        if op.problem:
+            if op.encrypted:
+                self.encrypted_unopened += 1
+            self._decode_error("undecodable", op.problem)
+            return
+        if op.is_ack:
+            with self.ack_cond:
+                key = (op.session, op.seq)
+                sent = self.sent.get(key)
+                if sent:
+                    self.acks[key] = (t, sent[1], sent[2], op.value)
+                    if (sent[1], sent[2]) == (0x00, 0x10):
+                        self._frequency_acked(t, sent[3], op.value)
+                self.ack_cond.notify_all()
+            return
+        name = {(2, 0): "broadcast", (2, 1): "lost_control"}.get((op.cmd_set, op.cmd_id), "other")
+        self.cmd_frames[name] = self.cmd_frames.get(name, 0) + 1
+        if name != "broadcast":
+            try:
+                self._payload(op.cmd_set, op.cmd_id, False, self.profile_name).parse(op.value)
+            except Exception as e:
+                self._decode_error(_error_class(e), f"command {op.cmd_set:#04x}/{op.cmd_id:#04x}: {_one_line(e)}")
+            return
+        try:
+            data = self._bcast.parse(op.value).body.data
+        except Exception as e:
+            self._decode_error(_error_class(e), f"broadcast seq {op.seq}, {len(op.value)} bytes: {_one_line(e)}")
+            if len(self.undecoded_broadcasts) < 200:
+                self.undecoded_broadcasts.append(op.value)
+            return
+        flags = op.value[0] | op.value[1] << 8
+        self.bcast.append((t, op.seq, flags))
+        if self.bcast_raw_prev == raw:
+            self.duplicates += 1
+        self.bcast_raw_prev = raw
+        for bit, item in enumerate(self.prof.flag_bits):
+            if flags >> bit & 1:
+                self.item_times[item].append(t)
+        self._values(t, data)
+        if self.on_broadcast:
+            self.on_broadcast(t, data)
+
+    def _decode_error(self, cls: str, detail: str) -> None:
+        self.decode_errors[cls] = self.decode_errors.get(cls, 0) + 1
+        if len(self.decode_examples) < MAX_EXAMPLES:
+            self.decode_examples.append(f"{cls}: {detail}")
+
+    # ---- values ----------------------------------------------------------
+
+    def _values(self, t: float, d) -> None:
+        f = self.findings
+        if d.get("time_stamp") is not None:
+            ticks = d.time_stamp.time
+            if self._prev_ticks is not None:
+                back = (ticks - self._prev_ticks) % (1 << 32) > (1 << 31)
+                f["time_stamp"].add(not back, f"t={t:.3f}: time {ticks} after {self._prev_ticks}")
+            self._prev_ticks = ticks
+            self.latest["time_stamp"] = (t, d.time_stamp)
+        if d.get("quaternion") is not None:
+            q = [float(d.quaternion[k]) for k in ("q0", "q1", "q2", "q3")]
+            norm = math.sqrt(sum(c * c for c in q))
+            f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, f"t={t:.3f}: |q| = {norm:.6g}")
+            if all(math.isfinite(c) for c in q):
+                r, p, y = (math.degrees(a) for a in quaternion_to_euler(*q))
+                self.traces["attitude"].append((t, r, p, y))
+                self.latest["attitude"] = (t, (r, p, y))
+        for item in ("acceleration", "velocity", "angular_rate", "gimbal"):
+            v = d.get(item)
+            if v is not None:
+                keys = ("roll", "pitch", "yaw") if item == "gimbal" else ("x", "y", "z")
+                vals = [float(v[k]) for k in keys]
+                f["finite"].add(all(math.isfinite(x) for x in vals), f"t={t:.3f}: {item} {vals}")
+                self.latest[item] = (t, vals)
+                if item == "velocity":
+                    self.traces["velocity"].append((t, *vals))
+        pos = d.get("position")
+        if pos is not None:
+            vals = [float(pos.latitude), float(pos.longitude), float(pos.altitude), float(pos.height)]
+            f["finite"].add(all(math.isfinite(x) for x in vals), f"t={t:.3f}: position {vals}")
+            f["gps_health"].add(0 <= pos.gps_health <= 5, f"t={t:.3f}: gps_health {pos.gps_health}")
+            self.latest["position"] = (t, vals)
+            self.traces["position"].append((t, *vals))
+        if d.get("battery") is not None:
+            f["battery"].add(0 <= d.battery <= 100, f"t={t:.3f}: battery {d.battery}%")
+        if d.get("flight_status") is not None:
+            f["flight_status"].add(d.flight_status in self.flight_status_values,
+                                   f"t={t:.3f}: flight status {d.flight_status} not in "
+                                   f"{sorted(self.flight_status_values)}")
+        rc = d.get("rc")
+        if rc is not None:
+            bad = []
+            for ch, rule in self.rc_rules.items():
+                v = rc[ch]
+                if rule["kind"] == "continuous":
+                    if not rule["min"] <= v <= rule["max"]:
+                        bad.append(f"{ch} {v} outside {rule['min']}..{rule['max']}")
+                elif v not in [x["value"] for x in rule["values"]]:
+                    bad.append(f"{ch} {v} not one of {[x['value'] for x in rule['values']]}")
+            f["rc_channels"].add(not bad, f"t={t:.3f}: " + "; ".join(bad))
+            self.latest["rc"] = (t, rc)
+        ci = d.get("control_info")
+        if ci is not None:
+            dev = int(ci.control_device)
+            bad = [] if dev in self.control_devices else [f"control device {dev}"]
+            if ci.get("cur_mov_control_mode") is not None and int(ci.cur_mov_control_mode) not in self.cur_modes:
+                bad.append(f"cur_mov_control_mode {int(ci.cur_mov_control_mode)}")
+            f["control_info"].add(not bad, f"t={t:.3f}: " + ", ".join(bad) + " not defined")
+            self.latest["control_info"] = (t, ci)
+
+    # ---- configuration epochs ------------------------------------------------
+
+    def _frequency_acked(self, t: float, request: bytes, ack: bytes) -> None:
+        if len(ack) < 2 or int.from_bytes(ack[:2], "little") != 0 or len(request) < 16:
+            return
+        rates = dict(self.epochs[-1].rates)
+        for item, code in zip(self.prof.flag_bits, request):
+            if code in HZ_OF_CODE:
+                rates[item] = HZ_OF_CODE[code]
+        self.epochs.append(Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}"))
+
+    def epoch_end(self, i: int) -> float:
+        if i + 1 < len(self.epochs):
+            return self.epochs[i + 1].start
+        return self.last_t or self.epochs[i].start
+
+    # ---- measurements --------------------------------------------------------
+
+    def measure_rates(self, rates: dict[str, int], t0: float, t1: float) -> dict[str, dict]:
+        """Per item: expected Hz, frames carrying it in [t0, t1], measured Hz."""
+        out = {}
+        for item in self.prof.flag_bits:
+            times = [t for t in self.item_times[item] if t0 <= t <= t1]
+            n = len(times)
+            measured = (n - 1) / (times[-1] - times[0]) if n >= 3 and times[-1] > times[0] else None
+            out[item] = {"expected_hz": rates.get(item, 0), "frames": n,
+                         "measured_hz": None if measured is None else round(measured, 2)}
+        return out
+
+    def frames_between(self, t0: float, t1: float) -> list[tuple[float, int, int]]:
+        return [b for b in self.bcast if t0 <= b[0] <= t1]
+
+    def wait_ack(self, session: int, seq: int, timeout: float) -> tuple[float, int, int, bytes] | None:
+        with self.ack_cond:
+            self.ack_cond.wait_for(lambda: (session, seq) in self.acks, timeout)
+            return self.acks.get((session, seq))
+
+
+def _one_line(exc: Exception) -> str:
+    return " ".join(str(exc).split())
+
+
+def _error_class(exc: Exception) -> str:
+    import construct
+
+    from .decode import classify
+    if isinstance(exc, construct.ConstructError):
+        return classify(exc)
+    return "undecodable"
+
+
+def percentile(values: list[float], p: float) -> float:
+    if not values:
+        return float("nan")
+    s = sorted(values)
+    k = (len(s) - 1) * p / 100.0
+    lo, hi = math.floor(k), math.ceil(k)
+    return s[lo] + (s[hi] - s[lo]) * (k - lo)

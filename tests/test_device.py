@@ -1,0 +1,241 @@
+"""`osdkc device` against `osdkc sim` over a real pseudo-terminal (or TCP),
+through pyserial, as a user runs them: two processes, real exit codes.
+
+Every profile passes passively and actively (with movement control); every
+fault the simulator injects makes the named check fail; robustness cases
+(no such port, sim killed, stalled stream, unplugged and back, wrong baud
+rate) end in a clear verdict and exit code, never a traceback or a hang.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+KEY = "00112233445566778899aabbccddeeff" * 2
+LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
+# Clean runs share the machine with other tests: allow scheduling noise in
+# arrival times there; the jitter fault test keeps the default limit.
+RELAXED = ("--max-jitter-ms", "150")
+
+
+@contextlib.contextmanager
+def sim(*args: str, env: dict | None = None):
+    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *args], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        url = proc.stdout.readline().strip()
+        assert url, proc.stderr.read()
+        yield url, proc
+    finally:
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGTERM)
+            try:
+                proc.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait()
+
+
+def device(*args: str, env: dict | None = None, timeout: float = 90) -> tuple[int, dict[str, tuple[str, str]], str]:
+    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "device", "--no-capture", *args],
+                          capture_output=True, text=True, timeout=timeout, env=env)
+    assert "Traceback" not in proc.stderr + proc.stdout, proc.stderr
+    checks = {m.group(2): (m.group(1), m.group(3)) for m in LINE.finditer(proc.stdout)}
+    return proc.returncode, checks, proc.stdout + proc.stderr
+
+
+def failing(checks: dict) -> list[str]:
+    return sorted(k for k, (status, _) in checks.items() if status in ("FAIL", "ERROR"))
+
+
+QUICK = ("--active-window", "1", "--motion-seconds", "1.2")
+ENV_KEY = {"OSDK_TEST_KEY": KEY}
+FAULTS = [
+    (("--noise", "0.05"), ["link.framing"]),
+    (("--bitflip", "0.05"), ["link.crc"]),
+    (("--drop-bytes", "0.05"), ["link.short_frames"]),
+    (("--truncate", "0.05"), ["link.short_frames"]),
+    (("--bad-crc", "0.05"), ["link.crc", "stream.sequence"]),
+    (("--duplicate", "0.05"), ["stream.duplicates"]),
+    (("--jitter", "80"), ["stream.jitter"]),
+    (("--rate-drift", "0.25"), ["stream.rates"]),
+    (("--implausible",), ["values.quaternion_norm", "values.gps_health", "values.rc_channels",
+                          "values.flight_status", "values.time_stamp"]),
+    (("--wrong-profile", "m100-fw3.1"), ["decode.profile", "decode.frames"]),
+]
+FAULT_IDS = [f[0][0].lstrip("-") for f in FAULTS]
+
+
+def _scenarios(tmp) -> dict[str, tuple[tuple, tuple, dict | None]]:
+    """name -> (sim args, device args, extra environment); all run concurrently, a few at a time."""
+    sc = {}
+    for p in PROFILES:
+        sc[f"motion-{p}"] = (("--profile", p, "--app-id", "1234", "--seed", "1"),
+                             ("--profile", p, "--duration", "2", "--active", "--allow-motion", "--app-id", "1234",
+                              "--html", str(tmp / f"{p}.html"), "--junit", str(tmp / f"{p}.xml"), *RELAXED, *QUICK),
+                             None)
+    for fault, fid in zip(FAULTS, FAULT_IDS):
+        sc[f"fault-{fid}"] = (("--profile", "a3-fw3.1", "--seed", "7", *fault[0]),
+                              ("--profile", "a3-fw3.1", "--duration", "2.5"), None)
+    sc["no-motion"] = (("--app-id", "9"), ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "9",
+                                          *RELAXED, *QUICK), None)
+    sc["rc-mode-p"] = (("--rc-mode", "P", "--app-id", "3"),
+                       ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "3", *RELAXED, *QUICK), None)
+    sc["wrong-app-id"] = (("--app-id", "3"),
+                          ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "4", *RELAXED, *QUICK),
+                          None)
+    sc["aes-tcp"] = (("--tcp", "0", "--profile", "m100-fw3.1", "--app-id", "77", "--key-env", "OSDK_TEST_KEY",
+                      "--encrypt"),
+                     ("--profile", "m100-fw3.1", "--duration", "1.5", "--active", "--app-id", "77", "--key-env",
+                      "OSDK_TEST_KEY", "--encrypt", *RELAXED, *QUICK), ENV_KEY)
+    sc["aes-no-key"] = (("--key-env", "OSDK_TEST_KEY", "--encrypt"), ("--profile", "a3-fw3.1", "--duration", "1"),
+                        ENV_KEY)
+    return sc
+
+
+def _run(sim_args, dev_args, extra_env):
+    env = dict(os.environ, **extra_env) if extra_env else None
+    with sim(*sim_args, env=env) as (url, _):
+        rc, checks, out = device("--port", url, *dev_args, env=env)
+    return url, rc, checks, out
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    from concurrent.futures import ThreadPoolExecutor
+
+    tmp = tmp_path_factory.mktemp("device")
+    sc = _scenarios(tmp)
+    with ThreadPoolExecutor(max_workers=3) as pool:
+        futures = {name: pool.submit(_run, *args) for name, args in sc.items()}
+        out = {name: f.result() for name, f in futures.items()}
+    out["tmp"] = tmp
+    return out
+
+
+@pytest.mark.parametrize("profile", PROFILES)
+def test_every_profile_passes_passive_and_active_with_motion(runs, profile):
+    _, rc, checks, out = runs[f"motion-{profile}"]
+    assert rc == 0, out
+    assert failing(checks) == []
+    for name in ("link.crc", "decode.profile", "stream.rates", "stream.flags", "stream.sequence",
+                 "values.quaternion_norm", "values.rc_channels", "values.flight_status", "values.time_stamp",
+                 "active.version", "active.activation", "active.frequency", "active.control_obtain",
+                 "active.control_release", "active.movement"):
+        assert checks[name][0] == "PASS", (name, checks.get(name))
+    assert "obtain_in_progress then 2 obtained" in checks["active.control_obtain"][1]
+    assert "MOVES THE AIRCRAFT" in out
+    page = (runs["tmp"] / f"{profile}.html").read_text()
+    assert page.count("<svg") == 4 and "Measured rate per item" in page and "CONFORMS" in page
+    assert 'name="active.movement"' in (runs["tmp"] / f"{profile}.xml").read_text()
+
+
+def test_movement_is_not_sent_without_allow_motion(runs):
+    _, rc, checks, out = runs["no-motion"]
+    assert rc == 0, out
+    assert checks["active.movement"][0] == "SKIP" and "--allow-motion" in checks["active.movement"][1]
+    assert "MOVES THE AIRCRAFT" not in out
+
+
+@pytest.mark.parametrize("fault,must_fail", FAULTS, ids=FAULT_IDS)
+def test_each_fault_fails_its_named_check(runs, fault, must_fail):
+    _, rc, checks, out = runs[f"fault-{fault[0].lstrip('-')}"]
+    assert rc == 1, out
+    for name in must_fail:
+        assert checks[name][0] == "FAIL", (name, checks.get(name), out)
+    if fault[0] == "--wrong-profile":
+        assert "--profile m100-fw3.1" in checks["decode.profile"][1]
+
+
+def test_rc_not_in_f_mode_fails_obtain_control_with_the_reason(runs):
+    _, rc, checks, _ = runs["rc-mode-p"]
+    assert rc == 1
+    assert checks["active.control_obtain"][0] == "FAIL"
+    assert "not in F mode" in checks["active.control_obtain"][1]
+
+
+def test_wrong_app_id_fails_activation(runs):
+    _, rc, checks, _ = runs["wrong-app-id"]
+    assert rc == 1
+    assert checks["active.activation"][0] == "FAIL" and "invalid_parameters" in checks["active.activation"][1]
+
+
+def test_aes_encrypted_session_over_tcp(runs):
+    url, rc, checks, out = runs["aes-tcp"]
+    assert url.startswith("socket://")
+    assert rc == 0, out
+    assert checks["active.activation"][0] == "PASS"
+
+
+def test_encrypted_stream_without_key_is_a_decode_failure(runs):
+    _, rc, checks, _ = runs["aes-no-key"]
+    assert rc == 1
+    assert checks["decode.frames"][0] == "FAIL" and "give --key-env" in checks["decode.frames"][1]
+
+
+# ---- robustness -------------------------------------------------------------
+
+def test_port_that_cannot_be_opened_is_a_usage_error(tmp_path):
+    t0 = time.monotonic()
+    rc, checks, out = device("--port", str(tmp_path / "no-such-tty"), "--profile", "a3-fw3.1", "--duration", "5")
+    assert rc == 2 and "cannot open port" in out and not checks
+    assert time.monotonic() - t0 < 10
+    rc, _, out = device("--port", "bogus://x", "--profile", "a3-fw3.1")
+    assert rc == 2 and "cannot open port" in out
+
+
+def test_sim_killed_mid_run_is_an_unplugged_verdict():
+    with sim() as (url, simproc):
+        dev = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "device", "--no-capture", "--port", url,
+                                "--profile", "a3-fw3.1", "--duration", "3"], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+        time.sleep(1.5)
+        simproc.kill()
+        out, err = dev.communicate(timeout=30)
+    assert "Traceback" not in err
+    assert dev.returncode == 1
+    checks = {m.group(2): (m.group(1), m.group(3)) for m in LINE.finditer(out)}
+    assert checks["link.connection"][0] == "FAIL" and "never came back" in checks["link.connection"][1]
+
+
+def test_stalled_stream_is_a_stall_verdict():
+    with sim("--stall-at", "1.5") as (url, _):
+        rc, checks, _ = device("--port", url, "--profile", "a3-fw3.1", "--duration", "3.5")
+    assert rc == 1
+    assert checks["link.stall"][0] == "FAIL" and "stalled" in checks["link.stall"][1]
+    assert checks["link.connection"][0] == "PASS"
+
+
+def test_unplugged_and_back_is_reported_and_the_run_continues(tmp_path):
+    link = tmp_path / "ttyFC"
+    with sim("--link", str(link), "--unplug-at", "1.5", "--unplug-for", "0.8") as (url, _):
+        assert url == str(link)
+        rc, checks, _ = device("--port", url, "--profile", "a3-fw3.1", "--duration", "3.5")
+    assert rc == 1
+    assert checks["link.connection"][0] == "FAIL" and "back after" in checks["link.connection"][1]
+    assert checks["decode.frames"][0] == "PASS"
+
+
+def test_wrong_baud_rate_is_a_baud_verdict():
+    with sim("--baud", "921600") as (url, _):
+        rc, checks, _ = device("--port", url, "--baud", "115200", "--profile", "a3-fw3.1", "--duration", "1.5")
+        assert rc == 1
+        assert checks["link.baud"][0] == "FAIL" and "wrong baud rate" in checks["link.baud"][1]
+        rc, checks, _ = device("--port", url, "--baud", "921600", "--profile", "a3-fw3.1", "--duration", "1.5",
+                               *RELAXED)
+        assert rc == 0 and checks["link.baud"][0] == "PASS"
+
+
+def test_usage_errors_exit_2():
+    rc, _, out = device("--port", "/dev/null", "--profile", "a3-fw3.1", "--allow-motion")
+    assert rc == 2 and "--allow-motion needs --active" in out
+    rc, _, out = device("--port", "/dev/null", "--profile", "a3-fw3.1", "--key-env", "OSDK_SURELY_UNSET_VAR")
+    assert rc == 2 and "OSDK_SURELY_UNSET_VAR" in out
