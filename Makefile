@@ -47,15 +47,18 @@ kit: setup
 # The whole suite; hypothesis runs its CI profile (10,000 examples per
 # message type in the differential test). pytest-xdist spreads the test
 # files over the cores (a file's tests stay together, so its module
-# fixtures run once).
+# fixtures run once); the `realtime` tests, which measure the rates of a
+# live simulator, run afterwards on their own.
 JOBS ?= auto
 test: setup check-generated
 	$(BIN)/python tools/gen_vectors.py --check
-	$(BIN)/pytest -q -n $(JOBS) --dist loadfile
+	$(BIN)/pytest -q -n $(JOBS) --dist loadfile -m 'not realtime'
+	$(BIN)/pytest -q -m realtime
 
 # A fast subset for development: no slow property tests, few examples.
 quick: setup
-	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow' -n $(JOBS) --dist loadfile
+	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow and not realtime' -n $(JOBS) --dist loadfile
+	$(BIN)/pytest -q -m 'realtime and not slow'
 
 clean:
 	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis

@@ -6,7 +6,9 @@ decoder behind `osdkc decode`, the Kaitai-generated parser), replays every
 golden vector against each bundled implementation in every language with
 the conformance runner (reports in reports/; the status section of
 generated/README.md is rendered from that run), and proves the suite bites
-with the mutation check.
+with the mutation check. Last, it runs the serial acceptance suite against
+the simulated flight controller over a pseudo-terminal (report in
+reports/device.html, capture in reports/device.pcapng).
 """
 from __future__ import annotations
 
@@ -77,6 +79,35 @@ def _osdkc(*argv: str) -> int:
     return main(list(argv))
 
 
+def _acceptance_on_simulator() -> int:
+    """`osdkc device --active` against `osdkc sim` on a pseudo-terminal: what
+    a bench acceptance run of a real flight controller does, without one."""
+    import signal
+    import subprocess
+    import sys
+
+    app_id = "1234"  # what the simulated FC accepts, as a configured app would be
+    print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc device --active", flush=True)
+    sim = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", "--profile", "a3-fw3.1",
+                            "--app-id", app_id],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        url = sim.stdout.readline().strip()
+        if not url:
+            print(f"  osdkc sim did not start: {sim.stderr.read().strip()}")
+            return 1
+        return _osdkc("device", "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
+                      "--app-id", app_id, "--quiet", "--capture", str(REPORTS / "device.pcapng"),
+                      "--html", str(REPORTS / "device.html"), "--junit", str(REPORTS / "device.xml"))
+    finally:
+        sim.send_signal(signal.SIGTERM)
+        try:
+            sim.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            sim.kill()
+            sim.wait()
+
+
 def run_kit(args: argparse.Namespace | None = None) -> int:
     print("== specification")
     failed = 1 if run_spec_check() else 0
@@ -90,12 +121,16 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
                 print(f"          {p}")
             passed += not problems
             failed += bool(problems)
+    REPORTS.mkdir(exist_ok=True)
     steps = [("run", "--impl", ALL, "--report-dir", str(REPORTS)), ("selftest",)]
     for argv in steps:
         ok = _osdkc(*argv) == 0
         passed += ok
         failed += not ok
     status_readme.update(REPORTS / "conformance.json")
+    ok = _acceptance_on_simulator() == 0
+    passed += ok
+    failed += not ok
     print(f"reports: {REPORTS}/")
     print(f"kit: {passed} passed, {failed} failed")
     return 1 if failed else 0

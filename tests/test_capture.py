@@ -9,9 +9,15 @@ import subprocess
 import sys
 import time
 
+import pytest
+
 from osdk_conformance.capture import (EPB_TYPE, IDB_TYPE, LINKTYPE_USER0, RX, SHB_TYPE, TX, CaptureWriter,
                                       read_capture)
 from osdk_conformance.worked_examples import BROADCAST, MOVEMENT
+
+# Measures rates and timing of a live simulator: run alone, never beside
+# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+pytestmark = pytest.mark.realtime
 
 
 def blocks(data: bytes):

@@ -18,6 +18,10 @@ import time
 
 import pytest
 
+# Measures rates and timing of a live simulator: run alone, never beside
+# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+pytestmark = pytest.mark.realtime
+
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
 KEY = "00112233445566778899aabbccddeeff" * 2
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)

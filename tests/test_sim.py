@@ -19,6 +19,10 @@ from osdk_conformance.sim import (PtyTransport, SimConfig, Simulator, Vehicle, e
 from osdk_construct.control import encode_movement_control
 from osdk_construct.payload import osdk_payload
 
+# Measures rates and timing of a live simulator: run alone, never beside
+# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+pytestmark = pytest.mark.realtime
+
 
 def fly(v: Vehicle, mode: int, x: float, y: float, z: float, yaw: float, seconds: float, dt: float = 0.01):
     t = 0.0
