@@ -822,15 +822,10 @@ def write_reports(args, results: list[Result], an, meta: dict) -> None:
 
 def run_device(args: argparse.Namespace) -> int:
     from .device_analysis import Analyzer
-    from .device_wire import KeyError_, key_from_env
+    from .device_wire import key_option
 
     opts = _options(args)
-    try:
-        key = key_from_env(args.key_env)
-    except KeyError_ as e:
-        raise UsageError(str(e)) from None
-    if args.encrypt and key is None:
-        raise UsageError("--encrypt needs --key-env")
+    key = key_option(args.key_env, args.encrypt)
     if args.allow_motion and not args.active:
         raise UsageError("--allow-motion needs --active")
     if args.duration <= 0 or args.active_window <= 0 or args.motion_seconds <= 0:

@@ -44,6 +44,20 @@ def key_from_env(var: str | None) -> bytes | None:
     return parse_key(os.environ[var])
 
 
+def key_option(key_env: str | None, encrypt: bool) -> bytes | None:
+    """The key of `--key-env VAR` for a command, checked with `--encrypt`;
+    a bad or missing key is a usage error."""
+    from .errors import UsageError
+
+    try:
+        key = key_from_env(key_env)
+    except KeyError_ as e:
+        raise UsageError(str(e)) from None
+    if encrypt and key is None:
+        raise UsageError("--encrypt needs --key-env")
+    return key
+
+
 def _cipher(key: bytes):
     from cryptography.hazmat.primitives.ciphers import Cipher, algorithms, modes
 

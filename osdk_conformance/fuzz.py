@@ -462,8 +462,8 @@ def start_fuzzees(commands: Sequence[tuple[str | None, Sequence[str]]],
     """Start every testee and ask for its capabilities. A testee's label is
     the one given, else the name it reports in its capabilities, else its
     command; repeated labels get #2, #3, ..."""
-    from .runner import BUNDLED_MEMORY_MB, parse_capabilities
-    from .testee import DEFAULT_MEMORY_MB, Testee, TesteeFailure, TesteeStartError
+    from .runner import parse_capabilities
+    from .testee import Testee, TesteeFailure, TesteeStartError
 
     out: list[Fuzzee] = []
     for label, argv in commands:
@@ -471,8 +471,7 @@ def start_fuzzees(commands: Sequence[tuple[str | None, Sequence[str]]],
         try:
             # Restarts are unlimited: a testee that crashes on every shrunk
             # example must keep answering with testee_crash, deterministically.
-            f.testee = Testee(argv, timeout=timeout, max_restarts=1 << 30,
-                              memory_mb=BUNDLED_MEMORY_MB.get(label or "", DEFAULT_MEMORY_MB))
+            f.testee = Testee(argv, timeout=timeout, max_restarts=1 << 30)
             f.testee.start()
             caps = parse_capabilities(f.testee.request({"op": "capabilities"}))
         except (TesteeStartError, TesteeFailure, ValueError) as e:

@@ -16,6 +16,7 @@ import argparse
 from typing import Callable
 
 from . import model
+from .errors import UsageError
 from .paths import ROOT
 from . import status_readme
 from .runner import ALL
@@ -82,30 +83,18 @@ def _osdkc(*argv: str) -> int:
 def _acceptance_on_simulator() -> int:
     """`osdkc device --active` against `osdkc sim` on a pseudo-terminal: what
     a bench acceptance run of a real flight controller does, without one."""
-    import signal
-    import subprocess
-    import sys
+    from .sim import spawned
 
     app_id = "1234"  # what the simulated FC accepts, as a configured app would be
     print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc device --active", flush=True)
-    sim = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", "--profile", "a3-fw3.1",
-                            "--app-id", app_id],
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
-        url = sim.stdout.readline().strip()
-        if not url:
-            print(f"  osdkc sim did not start: {sim.stderr.read().strip()}")
-            return 1
-        return _osdkc("device", "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
-                      "--app-id", app_id, "--quiet", "--capture", str(REPORTS / "device.pcapng"),
-                      "--html", str(REPORTS / "device.html"), "--junit", str(REPORTS / "device.xml"))
-    finally:
-        sim.send_signal(signal.SIGTERM)
-        try:
-            sim.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            sim.kill()
-            sim.wait()
+        with spawned("--profile", "a3-fw3.1", "--app-id", app_id) as (url, _):
+            return _osdkc("device", "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
+                          "--app-id", app_id, "--quiet", "--capture", str(REPORTS / "device.pcapng"),
+                          "--html", str(REPORTS / "device.html"), "--junit", str(REPORTS / "device.xml"))
+    except UsageError as e:
+        print(f"  {e}")
+        return 1
 
 
 def run_kit(args: argparse.Namespace | None = None) -> int:

@@ -60,6 +60,14 @@ class KsyIndex:
             path = path + (snake_child(self, module, path, part),)
         return self.types[(module, path)]
 
+    def raw_seq(self, kt: KsyType) -> list[dict]:
+        """The seq of a type as the .ksy file writes it (every key of every
+        field, `trailing` included)."""
+        body = self.files[kt.file]
+        for part in kt.path:
+            body = body["types"][part]
+        return body.get("seq") or []
+
     def element_exists(self, ref: str) -> bool:
         """True for 'file.ksy', 'file.ksy#type', 'file.ksy#type.field' or
         'file.ksy#enum:name' / 'file.ksy#enum:name.value'."""

@@ -27,6 +27,21 @@ from . import ksy
 
 SKIPPED_FIELDS = frozenset({"trailing"})
 
+# docs/VALUE-MODEL.md, "Error classes": the class a failed `valid` check of
+# each field means, for decoders that learn the failing field (Kaitai
+# runtimes, the generated tables for the other languages).
+ERROR_BY_FIELD = {
+    "sof": "bad_sof",
+    "len": "impossible_length",
+    "ver": "bad_version",
+    "res0": "reserved_bits",
+    "res1": "reserved_bits",
+    "reserved_flags": "reserved_bits",
+    "enc": "bad_encryption",
+    "is_ack": "bad_session",
+    "trailing": "length_mismatch",
+}
+
 
 def float_model(bits: int, width: int) -> dict:
     if width == 32:

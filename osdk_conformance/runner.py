@@ -49,9 +49,6 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
     "go": [str(TESTEES / "go" / "bin" / "osdk-go-testee")],
     "c": [str(TESTEES / "c" / "build" / "osdk-c-testee")],
 }
-# Address-space limits other than the default, for runtimes that reserve
-# more virtual memory than they use.
-BUNDLED_MEMORY_MB: dict[str, int] = {}
 ALL = "all"
 FAILURE_LISTS = ROOT / "conformance" / "failure_lists"
 # What a built implementation needs on disk, and how to get it.
@@ -352,7 +349,7 @@ def run_command(args: argparse.Namespace) -> int:
         raise UsageError("no vector matches the --profile / --filter selection")
 
     timeout = args.timeout if args.timeout is not None else DEFAULT_TIMEOUT
-    memory_mb = args.memory_mb if args.memory_mb is not None else BUNDLED_MEMORY_MB.get(args.impl, DEFAULT_MEMORY_MB)
+    memory_mb = args.memory_mb if args.memory_mb is not None else DEFAULT_MEMORY_MB
     try:
         testee = Testee(argv, timeout=timeout, memory_mb=memory_mb)
         testee.start()

@@ -18,6 +18,7 @@ a stalled stream, an unplugged-and-back port, a baud rate mismatch.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import errno
 import json
 import math
@@ -34,7 +35,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .deframe import Deframer, Frame
-from .device_wire import KeyError_, encode, key_from_env, open_frame
+from .device_wire import encode, key_option, open_frame
 from .errors import UsageError
 
 R_EARTH = 6378137.0
@@ -760,17 +761,47 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--exit-after", type=float, metavar="S", help="exit after S seconds")
 
 
+# ---- running the simulator as a child process (kit, soak, tests) ----------
+
+def stop_child(proc) -> None:
+    """SIGTERM a running `osdkc sim` (it drains and writes --stats), kill it
+    if it does not end within 10 s."""
+    import subprocess
+
+    if proc.poll() is not None:
+        return
+    proc.send_signal(signal.SIGTERM)
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+
+
+@contextlib.contextmanager
+def spawned(*sim_args: str, env: dict | None = None):
+    """`osdkc sim SIM_ARGS` in a child process: yields (url, process) once it
+    has printed the URL of its port, and stops it on the way out."""
+    import subprocess
+
+    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *sim_args],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    try:
+        url = proc.stdout.readline().strip()
+        if not url:
+            proc.wait()
+            raise UsageError("osdkc sim did not start: " + proc.stderr.read().strip())
+        yield url, proc
+    finally:
+        stop_child(proc)
+
+
 def run_sim(args: argparse.Namespace) -> int:
     for name in FAULTS:
         p = getattr(args, name)
         if not 0.0 <= p <= 1.0:
             raise UsageError(f"--{name.replace('_', '-')}: a probability is 0..1, got {p}")
-    try:
-        key = key_from_env(args.key_env)
-    except KeyError_ as e:
-        raise UsageError(str(e)) from None
-    if args.encrypt and key is None:
-        raise UsageError("--encrypt needs --key-env")
+    key = key_option(args.key_env, args.encrypt)
     from .rules import profile as load_profile
     prof = load_profile(args.profile)
     rates = {}

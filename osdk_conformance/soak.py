@@ -18,8 +18,6 @@ import json
 import os
 import resource
 import signal
-import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -44,21 +42,17 @@ def run_soak(args: argparse.Namespace) -> int:
     from .device import Port
     from .device_analysis import Analyzer, percentile
     from .rules import profile as load_profile
+    from .sim import spawned, stop_child
 
     if args.duration <= 0:
         raise UsageError("--duration must be positive")
     prof = load_profile(args.profile)
     with tempfile.TemporaryDirectory(prefix="osdkc-soak-") as tmp:
         stats_path = Path(tmp) / "sim.json"
-        cmd = [sys.executable, "-m", "osdk_conformance.cli", "sim", "--profile", args.profile, "--hold",
-               "--baud", str(args.baud), "--stats", str(stats_path)]
+        sim_args = ["--profile", args.profile, "--hold", "--baud", str(args.baud), "--stats", str(stats_path)]
         for item in prof.flag_bits:
-            cmd += ["--rate", f"{item}={args.hz}"]
-        sim = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        try:
-            url = sim.stdout.readline().strip()
-            if not url:
-                raise UsageError("osdkc sim did not start: " + sim.stderr.read().strip())
+            sim_args += ["--rate", f"{item}={args.hz}"]
+        with spawned(*sim_args) as (url, sim):
             an = Analyzer(args.profile)
             latencies: list[float] = []
 
@@ -74,12 +68,7 @@ def run_soak(args: argparse.Namespace) -> int:
             cpu0, wall0 = _cpu(), time.monotonic()
             sim.send_signal(signal.SIGUSR1)
             time.sleep(args.duration)
-            sim.send_signal(signal.SIGTERM)
-            try:
-                sim.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                sim.kill()
-                sim.wait()
+            stop_child(sim)
             # the sim waited until every byte was read; give the reader a moment to decode the last ones
             time.sleep(0.3)
             port.close()
@@ -89,10 +78,6 @@ def run_soak(args: argparse.Namespace) -> int:
                 sent = json.loads(stats_path.read_text())
             except (OSError, ValueError):
                 raise UsageError("osdkc sim left no statistics: " + sim.stderr.read().strip()) from None
-        finally:
-            if sim.poll() is None:
-                sim.kill()
-                sim.wait()
     received = len(an.bcast)
     seqs = [b[1] for b in an.bcast]
     gaps = sum(((b - a) % 65536) - 1 for a, b in zip(seqs, seqs[1:]) if (b - a) % 65536 > 1)

@@ -13,6 +13,7 @@ import pytest
 
 from osdk_conformance.capture import (EPB_TYPE, IDB_TYPE, LINKTYPE_USER0, RX, SHB_TYPE, TX, CaptureWriter,
                                       read_capture)
+from osdk_conformance.sim import spawned
 from osdk_conformance.worked_examples import BROADCAST, MOVEMENT
 
 # Measures rates and timing of a live simulator: run alone, never beside
@@ -84,19 +85,13 @@ def test_decode_reads_a_capture_like_the_bytes_it_received(tmp_path):
 
 def test_sigkilled_device_run_leaves_a_capture_that_replays(tmp_path):
     cap = tmp_path / "killed.pcapng"
-    sim = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", "--profile", "m100-fw2.3"],
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        url = sim.stdout.readline().strip()
+    with spawned("--profile", "m100-fw2.3") as (url, _):
         dev = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "device", "--port", url, "--profile",
                                 "m100-fw2.3", "--duration", "30", "--capture", str(cap)],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         time.sleep(3.0)
         dev.send_signal(signal.SIGKILL)
         dev.wait(timeout=10)
-    finally:
-        sim.send_signal(signal.SIGTERM)
-        sim.wait(timeout=10)
     c = read_capture(cap)
     assert c.comment["profile"] == "m100-fw2.3" and c.comment["port"] == url
     assert sum(len(r.data) for r in c.records if r.direction == RX) > 5000

@@ -8,15 +8,15 @@ rate) end in a clear verdict and exit code, never a traceback or a hang.
 """
 from __future__ import annotations
 
-import contextlib
 import os
 import re
-import signal
 import subprocess
 import sys
 import time
 
 import pytest
+
+from osdk_conformance.sim import spawned
 
 # Measures rates and timing of a live simulator: run alone, never beside
 # CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
@@ -30,22 +30,9 @@ LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
 RELAXED = ("--max-jitter-ms", "150")
 
 
-@contextlib.contextmanager
 def sim(*args: str, env: dict | None = None):
-    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env)
-    try:
-        url = proc.stdout.readline().strip()
-        assert url, proc.stderr.read()
-        yield url, proc
-    finally:
-        if proc.poll() is None:
-            proc.send_signal(signal.SIGTERM)
-            try:
-                proc.wait(timeout=10)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
+    """`osdkc sim ARGS` as a child: yields (url, process), stops it after."""
+    return spawned(*args, env=env)
 
 
 def device(*args: str, env: dict | None = None, timeout: float = 90) -> tuple[int, dict[str, tuple[str, str]], str]:

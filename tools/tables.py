@@ -4,7 +4,7 @@ so that no testee re-implements the rules engine or re-reads YAML.
 
 Written by tools/regen.py to generated/tables/osdk_tables.json (and read by
 the C generator). Everything here is derived, none of it is typed by hand
-except ERROR_BY_FIELD, which restates the table of docs/VALUE-MODEL.md.
+(the error classes by field are osdk_conformance.model.ERROR_BY_FIELD).
 
 - crc: CRC-16/CRC-32 parameters (init as the register value, as the SDK
   code holds it; ERRATA E21);
@@ -30,20 +30,7 @@ sys.path.insert(0, str(ROOT))
 
 from osdk_conformance import ksy, rules  # noqa: E402
 from osdk_conformance.commands import COMMANDS  # noqa: E402
-from osdk_conformance.model import SKIPPED_FIELDS  # noqa: E402
-
-# docs/VALUE-MODEL.md, "Error classes": the class of a failed `valid`.
-ERROR_BY_FIELD = {
-    "sof": "bad_sof",
-    "len": "impossible_length",
-    "ver": "bad_version",
-    "res0": "reserved_bits",
-    "res1": "reserved_bits",
-    "reserved_flags": "reserved_bits",
-    "enc": "bad_encryption",
-    "is_ack": "bad_session",
-    "trailing": "length_mismatch",
-}
+from osdk_conformance.model import ERROR_BY_FIELD, SKIPPED_FIELDS  # noqa: E402
 
 _PRIM = re.compile(r"^(u|s)(1|2|4|8)(le|be)?$")
 _FLOAT = re.compile(r"^f(4|8)(le|be)?$")
@@ -90,20 +77,23 @@ def _field_model(file_id: str, spec: dict) -> dict[str, Any]:
     return out
 
 
+def _seqs() -> Iterator[tuple[str, tuple[str, ...], list[dict]]]:
+    """(file id, type path, raw seq) of every ksy type, in key order."""
+    index = ksy.load()
+    for (file_id, path), kt in sorted(index.types.items()):
+        yield file_id, path, index.raw_seq(kt)
+
+
 def model_tables() -> dict[str, Any]:
     index = ksy.load()
     types: dict[str, Any] = {}
-    for (file_id, path), kt in sorted(index.types.items()):
-        body = index.files[file_id]
-        for part in path:
-            body = body["types"][part]
-        fields = [_field_model(file_id, f) for f in (body.get("seq") or []) if f["id"] not in SKIPPED_FIELDS]
+    for file_id, path, seq in _seqs():
         types[_type_key(file_id, path)] = {
             "class_path": [ksy.camel(file_id)] + [ksy.camel(p) for p in path],
             # every seq id in order: a runtime's validation error names its
             # field by position ("/seq/N"), skipped fields included
-            "seq": [f["id"] for f in (body.get("seq") or [])],
-            "fields": fields,
+            "seq": [f["id"] for f in seq],
+            "fields": [_field_model(file_id, f) for f in seq if f["id"] not in SKIPPED_FIELDS],
         }
     enums = {
         f"{file_id}.{name}": {str(k): v for k, v in sorted(values.items())}
@@ -112,26 +102,16 @@ def model_tables() -> dict[str, Any]:
     return {"types": types, "enums": enums}
 
 
-def _seqs() -> Iterator[tuple[str, list[dict]]]:
-    """(type key, raw seq) of every ksy type."""
-    index = ksy.load()
-    for (file_id, path), _ in sorted(index.types.items()):
-        body = index.files[file_id]
-        for part in path:
-            body = body["types"][part]
-        yield _type_key(file_id, path), body.get("seq") or []
-
-
 def if_expressions() -> dict[str, Any]:
     """The `if` of every conditional seq field, by type key and field id.
     A runtime whose objects cannot show that an integer field is absent (Go
     keeps a zero there) evaluates the expression itself."""
     out: dict[str, Any] = {}
-    for key, seq in _seqs():
+    for file_id, path, seq in _seqs():
         conds = {f["id"]: (str(f["if"]).lower() if isinstance(f["if"], bool) else str(f["if"]))
                  for f in seq if "if" in f}
         if conds:
-            out[key] = conds
+            out[_type_key(file_id, path)] = conds
     return out
 
 
@@ -140,10 +120,10 @@ def checked_fields() -> dict[str, Any]:
     the position ("/seq/N") a validation error gives, they say which field
     failed when the runtime's error does not name the raising type (Go)."""
     out: dict[str, Any] = {}
-    for key, seq in _seqs():
+    for file_id, path, seq in _seqs():
         ids = [f["id"] for f in seq if "valid" in f or "contents" in f]
         if ids:
-            out[key] = ids
+            out[_type_key(file_id, path)] = ids
     return out
 
 

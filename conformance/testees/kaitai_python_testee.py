@@ -80,18 +80,6 @@ NAME = "osdk-kaitai-python"
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
 OPERATIONS = ("decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control")
 
-# The error class of a failed `valid` check, by the field it guards (docs/VALUE-MODEL.md).
-FIELD_ERRORS = {
-    "sof": "bad_sof",
-    "len": "impossible_length",
-    "ver": "bad_version",
-    "res0": "reserved_bits",
-    "res1": "reserved_bits",
-    "reserved_flags": "reserved_bits",
-    "enc": "bad_encryption",
-    "is_ack": "bad_session",
-    "trailing": "length_mismatch",
-}
 AXIS_RANGE = {"x": "horizontal", "y": "horizontal", "z": "vertical", "yaw": "yaw"}
 PENDING_LIMIT = 1024  # unanswered commands remembered for ACK matching
 _HEX = re.compile(r"(?:[0-9a-fA-F]{2})*")
@@ -140,7 +128,7 @@ def _raising_field(exc: ValidationFailedError) -> str | None:
 def rejection(exc: Exception) -> Rejection:
     if isinstance(exc, ValidationFailedError):
         name = _raising_field(exc)
-        return Rejection(FIELD_ERRORS.get(name, "undecodable"), f"{name or exc.src_path}: {_one_line(exc)}")
+        return Rejection(model.ERROR_BY_FIELD.get(name, "undecodable"), f"{name or exc.src_path}: {_one_line(exc)}")
     if isinstance(exc, (EndOfStreamError, EOFError)):
         return Rejection("truncated_payload", _one_line(exc))
     return Rejection("undecodable", f"{type(exc).__name__}: {_one_line(exc)}")
@@ -163,13 +151,6 @@ def parse(make, data: bytes):
 _WIDTH = {"u1": 1, "s1": 1, "u2": 2, "s2": 2, "u4": 4, "s4": 4, "u8": 8, "s8": 8, "f4": 4, "f8": 8}
 
 
-def _raw_seq(kt: ksy.KsyType) -> list[dict]:
-    body = KSY.files[kt.file]
-    for part in kt.path:
-        body = body["types"][part]
-    return body.get("seq", []) or []
-
-
 def _prim(t: Any) -> str | None:
     if isinstance(t, str):
         base = t[:-2] if t[-2:] in ("le", "be") and t[:-2] in _WIDTH else t
@@ -183,7 +164,7 @@ def restore_nan_bits(obj: KaitaiStruct, m: dict, buf: bytes, pos: int = 0) -> in
     `buf` is the whole of obj's stream, `pos` where obj starts in it.
     Returns where obj ends."""
     bits = 0
-    for spec in _raw_seq(KSY.type_for_class(type(obj))):
+    for spec in KSY.raw_seq(KSY.type_for_class(type(obj))):
         name = spec["id"]
         if not hasattr(obj, name):
             continue  # `if` was false
