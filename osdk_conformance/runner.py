@@ -460,6 +460,8 @@ def _forwarded(args: argparse.Namespace) -> list[str]:
         out += ["--filter", args.filter]
     if args.timeout is not None:
         out += ["--timeout", str(args.timeout)]
+    if args.memory_mb is not None:
+        out += ["--memory-mb", str(args.memory_mb)]
     return out
 
 
