@@ -205,6 +205,19 @@ def test_stalled_stream_is_a_stall_verdict():
     assert checks["link.connection"][0] == "PASS"
 
 
+def test_stall_limit_stretches_for_a_slow_configuration():
+    """An FC configured with every item at 1 Hz is silent a second between frames by design."""
+    from osdk_conformance.device import Options, stall_limit
+    from osdk_conformance.device_analysis import Analyzer
+    from osdk_conformance.rules import profile
+
+    items = profile("a3-fw3.1").flag_bits
+    opts = Options("a3-fw3.1")
+    assert stall_limit(Analyzer("a3-fw3.1"), opts) == 1.0
+    assert stall_limit(Analyzer("a3-fw3.1", expect_rates={i: 1 for i in items}), opts) == 3.0
+    assert stall_limit(Analyzer("a3-fw3.1", expect_rates={i: 0 for i in items}), opts) == 1.0
+
+
 def test_unplugged_and_back_is_reported_and_the_run_continues(tmp_path):
     link = tmp_path / "ttyFC"
     with sim("--link", str(link), "--unplug-at", "1.5", "--unplug-for", "0.8") as (url, _):
