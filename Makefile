@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 PY_OK  := $(VENV)/.installed
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup system-packages testees kit test quick regen check-generated vectors clean
+.PHONY: setup system-packages testees kit test quick regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
@@ -21,6 +21,7 @@ system-packages:
 
 testees: $(PY_OK) $(JS_OK)
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang build || exit 1; done
+	@$(MAKE) --no-print-directory -C conformance/baseline build
 
 $(PY_OK): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -60,6 +61,28 @@ quick: setup
 	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow and not realtime' -n $(JOBS) --dist loadfile
 	$(BIN)/pytest -q -m 'realtime and not slow'
 
+# Benchmarks (docs/PERFORMANCE.md): every section, the full corpora; rewrites
+# the results block of docs/PERFORMANCE.md. Takes tens of minutes.
+bench: setup
+	@mkdir -p reports
+	$(BIN)/osdkc bench --markdown docs/PERFORMANCE.md --json reports/bench.json
+
+# Every coverage-guided fuzz target for FUZZ_SECONDS each, seeded from
+# vectors/ (docs/FUZZING.md): C libFuzzer (deframer, broadcast), Python
+# atheris, Go native fuzzing. A finding stops with a non-zero exit; its input
+# is in conformance/testees/c/build/findings/, fuzz/build/findings/ or
+# conformance/testees/go/testdata/fuzz/ (tools/fuzz_to_vector.py makes it a vector).
+FUZZ_SECONDS ?= 60
+fuzz: setup
+	$(MAKE) --no-print-directory -C conformance/testees/c fuzz-smoke FUZZ_SECONDS=$(FUZZ_SECONDS)
+	@mkdir -p fuzz/build/corpus fuzz/build/findings
+	$(BIN)/python tools/fuzz_corpus.py deframer fuzz/build/corpus
+	$(BIN)/python fuzz/fuzz_decode.py fuzz/build/corpus -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	  -artifact_prefix=fuzz/build/findings/
+	cd conformance/testees/go && go test -run '^$$' -fuzz '^FuzzDecodeStream$$' -fuzztime $(FUZZ_SECONDS)s \
+	  -fuzzminimizetime 100x -parallel 1 .
+
 clean:
-	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis
+	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis .cache
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang clean; done
+	@$(MAKE) --no-print-directory -C conformance/baseline clean

@@ -129,6 +129,11 @@ def build_parser() -> argparse.ArgumentParser:
     sk = sub.add_parser("soak", help="benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost")
     soak.add_arguments(sk, PROFILES)
     sk.set_defaults(func=_soak)
+    from . import bench  # no third-party import until it runs
+
+    bn = sub.add_parser("bench", help="benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak")
+    bench.add_arguments(bn, PROFILES)
+    bn.set_defaults(func=bench.run_bench)
     return ap
 
 

@@ -55,13 +55,16 @@ def classify(exc: construct.ConstructError) -> str:
 
 
 class Decoder:
-    def __init__(self, profile: str) -> None:
+    def __init__(self, profile: str, models: bool = True) -> None:
+        # models=False leaves each value as Construct parsed it: the testees'
+        # bench mode times decoding, not the value model.
         from osdk_construct.frame import parse_frame
         from osdk_construct.payload import payload
 
         self._parse_frame = parse_frame
         self._payload = payload
         self.profile = profile
+        self._model = model.from_construct if models else _as_parsed
         self._pending: dict[tuple[int, int], tuple[int, int]] = {}  # (session, seq) -> (set, id)
 
     def event(self, ev: Frame | Rejected | Garbage) -> dict:
@@ -83,7 +86,7 @@ class Decoder:
             return {"offset": ev.offset, "kind": "error", "error": classify(e),
                     "detail": _one_line(e), "length": len(ev.raw), "frame_header": header_fields(ev.raw)}
         out: dict[str, Any] = {"offset": ev.offset, "kind": "frame"}
-        frame = model.from_construct(parsed)
+        frame = self._model(parsed)
         data = parsed.get("data")
         if parsed.len == 12:
             out["command"] = "none"
@@ -95,7 +98,7 @@ class Decoder:
                 cmd = self._pending.pop(key)
                 out["ack_of"] = command_name(*cmd)
                 try:
-                    out["ack"] = model.from_construct(self._payload(*cmd, True, self.profile).parse(data.ack_value))["body"]
+                    out["ack"] = self._model(self._payload(*cmd, True, self.profile).parse(data.ack_value))["body"]
                 except construct.ConstructError as e:
                     return {"offset": ev.offset, "kind": "error", "error": classify(e), "detail": _one_line(e),
                             "length": len(ev.raw), "frame_header": header_fields(ev.raw), "ack_of": out["ack_of"]}
@@ -110,6 +113,10 @@ class Decoder:
                     self._pending.pop(next(iter(self._pending)))
         out["frame"] = frame
         return out
+
+
+def _as_parsed(parsed: Any) -> Any:
+    return parsed
 
 
 def _one_line(exc: Exception) -> str:
@@ -151,8 +158,8 @@ def received_bytes(chunks: Iterable[bytes]) -> Iterator[bytes]:
     yield from cap.received()
 
 
-def decode_events(chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
-    decoder = Decoder(profile)
+def decode_events(chunks: Iterable[bytes], profile: str, models: bool = True) -> Iterator[dict]:
+    decoder = Decoder(profile, models)
     for ev in deframe(chunks):
         yield decoder.event(ev)
 

@@ -123,7 +123,8 @@ class Deframer:
                     self._garbage_start = self._base
                 self._drop(n)
                 continue
-            yield from self._flush_garbage()
+            if self._garbage_start is not None:
+                yield from self._flush_garbage()
             if len(buf) < HEADER_LEN:
                 if not final:
                     break
@@ -135,7 +136,7 @@ class Deframer:
                 yield Rejected(self._base, *problem)
                 self._drop(1)
                 continue
-            length = frame_length(header)
+            length = (header[1] | header[2] << 8) & 0x3FF  # frame_length, inline: this runs once a frame
             if len(buf) < length:
                 if not final:
                     break

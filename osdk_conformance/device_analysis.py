@@ -41,13 +41,19 @@ class Finding:
     count: int = 0
     examples: list[str] = field(default_factory=list)
 
-    def add(self, ok: bool, example: str) -> None:
+    def add(self, ok: bool, example: Callable[[], str]) -> None:
+        """One sample; `example()` describes a violation, and is only called
+        for the ones kept (formatting every sample cost more than checking it)."""
         self.samples += 1
         if not ok:
             self.count += 1
             if len(self.examples) < MAX_EXAMPLES:
-                self.examples.append(example)
+                self.examples.append(example())
 
+
+_VECTOR_ITEMS = (("acceleration", ("x", "y", "z")), ("velocity", ("x", "y", "z")),
+                 ("angular_rate", ("x", "y", "z")), ("gimbal", ("roll", "pitch", "yaw")))
+"""Items of three floats that must be finite, with their field names."""
 
 VALUE_RULES = ("quaternion_norm", "gps_health", "battery", "rc_channels", "flight_status", "time_stamp",
                "control_info", "finite")
@@ -56,6 +62,7 @@ VALUE_RULES = ("quaternion_norm", "gps_health", "battery", "rc_channels", "fligh
 class Analyzer:
     def __init__(self, profile: str, key: bytes | None = None, expect_rates: dict[str, int] | None = None,
                  flight_status_enum: str | None = None) -> None:
+        from osdk_construct.compiled import parse
         from osdk_construct.payload import osdk_payload
 
         from .rules import default_rules
@@ -66,6 +73,7 @@ class Analyzer:
         self.prof = rules.profile(profile)
         self.key = key
         self._payload = osdk_payload
+        self._parse = parse  # compiled where safe: at 100 Hz the interpreter alone costs ~5% of a core
         self._bcast = osdk_payload(2, 0, False, profile)
         self.lock = threading.RLock()
         self.ack_cond = threading.Condition(self.lock)
@@ -103,6 +111,10 @@ class Analyzer:
         self._prev_ticks: int | None = None
         rc = rules.data["rc_channels"]["channels"]
         self.rc_rules = rc
+        # (channel, min, max, allowed values or None when continuous), worked out once, not per frame
+        self._rc_checks = [(ch, r.get("min"), r.get("max"),
+                            None if r["kind"] == "continuous" else [x["value"] for x in r["values"]])
+                           for ch, r in rc.items()]
         self.control_devices = rules.enum("control_device")
         self.cur_modes = rules.enum("cur_mov_control_mode")
         self.latest: dict[str, tuple[float, Any]] = {}
@@ -211,12 +223,12 @@ class Analyzer:
         self.cmd_frames[name] = self.cmd_frames.get(name, 0) + 1
         if name != "broadcast":
             try:
-                self._payload(op.cmd_set, op.cmd_id, False, self.profile_name).parse(op.value)
+                self._parse(self._payload(op.cmd_set, op.cmd_id, False, self.profile_name), op.value)
             except Exception as e:
                 self._decode_error(_error_class(e), f"command {op.cmd_set:#04x}/{op.cmd_id:#04x}: {_one_line(e)}")
             return
         try:
-            data = self._bcast.parse(op.value).body.data
+            data = self._parse(self._bcast, op.value).body.data
         except Exception as e:
             self._decode_error(_error_class(e), f"broadcast seq {op.seq}, {len(op.value)} bytes: {_one_line(e)}")
             if len(self.undecoded_broadcasts) < 200:
@@ -243,54 +255,58 @@ class Analyzer:
 
     def _values(self, t: float, d) -> None:
         f = self.findings
-        if d.get("time_stamp") is not None:
-            ticks = d.time_stamp.time
-            if self._prev_ticks is not None:
-                back = (ticks - self._prev_ticks) % (1 << 32) > (1 << 31)
-                f["time_stamp"].add(not back, f"t={t:.3f}: time {ticks} after {self._prev_ticks}")
+        ts = d.get("time_stamp")
+        if ts is not None:
+            ticks, prev = ts.time, self._prev_ticks
+            if prev is not None:
+                back = (ticks - prev) % (1 << 32) > (1 << 31)
+                f["time_stamp"].add(not back, lambda: f"t={t:.3f}: time {ticks} after {prev}")
             self._prev_ticks = ticks
-            self.latest["time_stamp"] = (t, d.time_stamp)
-        if d.get("quaternion") is not None:
-            q = [float(d.quaternion[k]) for k in ("q0", "q1", "q2", "q3")]
+            self.latest["time_stamp"] = (t, ts)
+        quat = d.get("quaternion")
+        if quat is not None:
+            q = [float(quat["q0"]), float(quat["q1"]), float(quat["q2"]), float(quat["q3"])]
             norm = math.sqrt(sum(c * c for c in q))
-            f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, f"t={t:.3f}: |q| = {norm:.6g}")
+            f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, lambda: f"t={t:.3f}: |q| = {norm:.6g}")
             if all(math.isfinite(c) for c in q):
                 r, p, y = (math.degrees(a) for a in quaternion_to_euler(*q))
                 self.traces["attitude"].append((t, r, p, y))
                 self.latest["attitude"] = (t, (r, p, y))
-        for item in ("acceleration", "velocity", "angular_rate", "gimbal"):
+        for item, keys in _VECTOR_ITEMS:
             v = d.get(item)
             if v is not None:
-                keys = ("roll", "pitch", "yaw") if item == "gimbal" else ("x", "y", "z")
                 vals = [float(v[k]) for k in keys]
-                f["finite"].add(all(math.isfinite(x) for x in vals), f"t={t:.3f}: {item} {vals}")
+                f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: {item} {vals}")
                 self.latest[item] = (t, vals)
                 if item == "velocity":
                     self.traces["velocity"].append((t, *vals))
         pos = d.get("position")
         if pos is not None:
-            vals = [float(pos.latitude), float(pos.longitude), float(pos.altitude), float(pos.height)]
-            f["finite"].add(all(math.isfinite(x) for x in vals), f"t={t:.3f}: position {vals}")
-            f["gps_health"].add(0 <= pos.gps_health <= 5, f"t={t:.3f}: gps_health {pos.gps_health}")
+            vals = [float(pos["latitude"]), float(pos["longitude"]), float(pos["altitude"]), float(pos["height"])]
+            f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: position {vals}")
+            health = pos.gps_health
+            f["gps_health"].add(0 <= health <= 5, lambda: f"t={t:.3f}: gps_health {health}")
             self.latest["position"] = (t, vals)
             self.traces["position"].append((t, *vals))
-        if d.get("battery") is not None:
-            f["battery"].add(0 <= d.battery <= 100, f"t={t:.3f}: battery {d.battery}%")
-        if d.get("flight_status") is not None:
-            f["flight_status"].add(d.flight_status in self.flight_status_values,
-                                   f"t={t:.3f}: flight status {d.flight_status} not in "
-                                   f"{sorted(self.flight_status_values)}")
+        battery = d.get("battery")
+        if battery is not None:
+            f["battery"].add(0 <= battery <= 100, lambda: f"t={t:.3f}: battery {battery}%")
+        status = d.get("flight_status")
+        if status is not None:
+            f["flight_status"].add(status in self.flight_status_values,
+                                   lambda: f"t={t:.3f}: flight status {status} not in "
+                                           f"{sorted(self.flight_status_values)}")
         rc = d.get("rc")
         if rc is not None:
             bad = []
-            for ch, rule in self.rc_rules.items():
+            for ch, lo, hi, allowed in self._rc_checks:
                 v = rc[ch]
-                if rule["kind"] == "continuous":
-                    if not rule["min"] <= v <= rule["max"]:
-                        bad.append(f"{ch} {v} outside {rule['min']}..{rule['max']}")
-                elif v not in [x["value"] for x in rule["values"]]:
-                    bad.append(f"{ch} {v} not one of {[x['value'] for x in rule['values']]}")
-            f["rc_channels"].add(not bad, f"t={t:.3f}: " + "; ".join(bad))
+                if allowed is None:
+                    if not lo <= v <= hi:
+                        bad.append(f"{ch} {v} outside {lo}..{hi}")
+                elif v not in allowed:
+                    bad.append(f"{ch} {v} not one of {allowed}")
+            f["rc_channels"].add(not bad, lambda: f"t={t:.3f}: " + "; ".join(bad))
             self.latest["rc"] = (t, rc)
         ci = d.get("control_info")
         if ci is not None:
@@ -298,7 +314,7 @@ class Analyzer:
             bad = [] if dev in self.control_devices else [f"control device {dev}"]
             if ci.get("cur_mov_control_mode") is not None and int(ci.cur_mov_control_mode) not in self.cur_modes:
                 bad.append(f"cur_mov_control_mode {int(ci.cur_mov_control_mode)}")
-            f["control_info"].add(not bad, f"t={t:.3f}: " + ", ".join(bad) + " not defined")
+            f["control_info"].add(not bad, lambda: f"t={t:.3f}: " + ", ".join(bad) + " not defined")
             self.latest["control_info"] = (t, ci)
 
     # ---- configuration epochs ------------------------------------------------

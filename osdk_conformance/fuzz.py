@@ -585,22 +585,29 @@ def _find_disagreement(exc: BaseException, depth: int = 0) -> Disagreement | Non
 def regression_group(d: Disagreement, labels: Sequence[str], seed: int) -> dict:
     """A vector group (FORMAT.md) holding the minimised example as one test,
     its expectation from the reference."""
+    a, b = d.between
+    comment = (f"found by osdkc fuzz (seed {seed}): {labels[a]} and {labels[b]} disagree: {d.reason}")
+    return regression_vector(d.op, d.profile, d.input, comment)
+
+
+def regression_vector(op: str, profile: str, inp: dict, comment: str) -> dict:
+    """A vector group (FORMAT.md) holding `inp` as one test of category
+    fuzz.regression, its expectation from the reference (also what
+    tools/fuzz_to_vector.py makes of a coverage-guided fuzzer's finding)."""
     from .reference import answer
     from .spec_rules import rule_flag
     from .vectors import project_result
 
-    ref = answer(d.op, d.profile, d.input)
+    ref = answer(op, profile, inp)
     if ref.get("ok"):
-        result, expected = "valid", project_result(d.op, ref["result"])
+        result, expected = "valid", project_result(op, ref["result"])
     else:
         result, expected = "invalid", {"error": ref["error"]}
-    digest = hashlib.sha256(json.dumps([d.op, d.profile, d.input], sort_keys=True).encode()).hexdigest()[:12]
-    a, b = d.between
-    comment = (f"found by osdkc fuzz (seed {seed}): {labels[a]} and {labels[b]} disagree: {d.reason}")
-    test = {"id": f"fuzz.regression.{d.op}.{d.profile.replace('.', '_')}.{digest}", "category": CATEGORY,
-            "comment": comment, "input": d.input, "result": result, "expected": expected,
-            "flags": [rule_flag(flag_rule(d.op, d.input, ref))]}
-    return {"operation": d.op, "profile": d.profile, "tests": [test]}
+    digest = hashlib.sha256(json.dumps([op, profile, inp], sort_keys=True).encode()).hexdigest()[:12]
+    test = {"id": f"fuzz.regression.{op}.{profile.replace('.', '_')}.{digest}", "category": CATEGORY,
+            "comment": comment, "input": inp, "result": result, "expected": expected,
+            "flags": [rule_flag(flag_rule(op, inp, ref))]}
+    return {"operation": op, "profile": profile, "tests": [test]}
 
 
 def flag_rule(op: str, inp: dict, ref: dict) -> str:

@@ -124,29 +124,34 @@ def _kaitai_value(value: Any, index: ksy.KsyIndex, f: ksy.KsyField | None) -> An
 
 def from_construct(value: Any) -> Any:
     """Model of what the Construct spec (osdk_construct) parsed."""
+    # imported once per model, not once per value: the import statement
+    # cost more than the conversion when it ran at every level
     from construct import Container, EnumInteger, EnumIntegerString, ListContainer
 
-    if hasattr(value, "ieee_bits"):
-        return float_model(value.ieee_bits, value.ieee_width)
-    if isinstance(value, Container):
-        return {
-            k: from_construct(v)
-            for k, v in value.items()
-            if not k.startswith("_") and k not in SKIPPED_FIELDS and v is not None
-        }
-    if isinstance(value, ListContainer):
-        return [from_construct(v) for v in value]
-    if isinstance(value, EnumIntegerString):
-        return enum_model(int(value), str(value))
-    if isinstance(value, EnumInteger):  # a value the enum has no name for
-        return enum_model(int(value), None)
-    if isinstance(value, bool):
-        return value
-    if isinstance(value, int):
-        return value
-    if isinstance(value, (bytes, bytearray)):
-        return bytes(value).hex()
-    raise TypeError(f"no model for {type(value).__name__}")
+    def convert(value: Any) -> Any:
+        if isinstance(value, Container):  # first: hasattr on a Container raises and catches a KeyError
+            return {
+                k: convert(v)
+                for k, v in value.items()
+                if not k.startswith("_") and k not in SKIPPED_FIELDS and v is not None
+            }
+        if hasattr(value, "ieee_bits"):
+            return float_model(value.ieee_bits, value.ieee_width)
+        if isinstance(value, ListContainer):
+            return [convert(v) for v in value]
+        if isinstance(value, EnumIntegerString):
+            return enum_model(int(value), str(value))
+        if isinstance(value, EnumInteger):  # a value the enum has no name for
+            return enum_model(int(value), None)
+        if isinstance(value, bool):
+            return value
+        if isinstance(value, int):
+            return value
+        if isinstance(value, (bytes, bytearray)):
+            return bytes(value).hex()
+        raise TypeError(f"no model for {type(value).__name__}")
+
+    return convert(value)
 
 
 # --- JSON ----------------------------------------------------------------------

@@ -49,8 +49,8 @@ from typing import Any, Callable
 import construct
 
 from . import model
-from .decode import Decoder, classify
-from .deframe import HEADER_LEN, deframe, frame_length, header_problem, split_chunks
+from .decode import classify, decode_events
+from .deframe import HEADER_LEN, frame_length, header_problem, split_chunks
 from .crc import crc32
 
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
@@ -245,8 +245,7 @@ def _decode_stream(profile: str, inp: dict) -> dict:
     sizes = _arg(inp, "chunks", list)
     if not all(isinstance(s, int) and not isinstance(s, bool) and s >= 0 for s in sizes):
         raise BadRequest("argument 'chunks' must be a list of non-negative integers")
-    decoder = Decoder(profile)
-    return ok({"events": [decoder.event(ev) for ev in deframe(split_chunks(data, sizes))]})
+    return ok({"events": list(decode_events(split_chunks(data, sizes), profile))})
 
 
 def _encode_movement_control(profile: str | None, inp: dict) -> dict:

@@ -386,6 +386,16 @@ class SimConfig:
     rates: dict[str, int] | None = None
 
 
+# A pty counts only the bytes that reached the client's side; bytes the
+# kernel is still moving there do not show, and closing the port loses
+# them. So the queue must stay empty for a moment before the stop, and a
+# client that reads nothing is given up only after a pause longer than a
+# loaded machine leaves a reader unscheduled (0.2 s lost frames at the end
+# of soak runs).
+DRAIN_SETTLE_S = 0.05
+DRAIN_STUCK_S = 1.0
+
+
 class Simulator:
     def __init__(self, cfg: SimConfig, transport) -> None:
         from osdk_construct.payload import osdk_payload
@@ -707,7 +717,7 @@ class Simulator:
                 jitter = self.rng.uniform(0, cfg.jitter_ms / 1000.0) if cfg.jitter_ms else 0.0
                 self.send_at = self.next_frame + jitter
 
-    def drain(self, timeout: float = 2.0) -> None:
+    def drain(self, timeout: float = 3.0) -> None:
         """Give the client the chance to read what was sent (a clean stop loses no frame)."""
         end = time.monotonic() + timeout
         last, since = -1, time.monotonic()
@@ -715,11 +725,12 @@ class Simulator:
             if self.outbuf:
                 self._flush()
             pending = self.t.pending_input() + len(self.outbuf)
-            if pending == 0:
-                return
+            now = time.monotonic()
             if pending != last:
-                last, since = pending, time.monotonic()
-            elif time.monotonic() - since > 0.2:
+                last, since = pending, now
+            elif pending == 0 and now - since >= DRAIN_SETTLE_S:
+                return
+            elif pending and now - since > DRAIN_STUCK_S:
                 return   # nobody is reading
             time.sleep(0.01)
 

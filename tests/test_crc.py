@@ -10,6 +10,7 @@ computes); and the CRC fields of the two worked frames.
 from __future__ import annotations
 
 import binascii
+import dataclasses
 import zlib
 
 import pytest
@@ -137,6 +138,14 @@ def test_a_flipped_bit_is_detected(data, bit, pos):
 @given(data=st.binary(max_size=200))
 def test_table_matches_bitwise_reference(name, data):
     assert crc.engine(name)(data) == bitwise_reference(_spec(name), data)
+
+
+@given(data=st.binary(max_size=300), init=st.integers(0, 2**32 - 1), xorout=st.integers(0, 2**32 - 1))
+def test_zlib_path_matches_the_table(data, init, xorout):
+    """Blocks with zlib's polynomial go to zlib.crc32; the table still says what they compute."""
+    engine = crc.Crc(dataclasses.replace(_spec("crc32"), init=init, xorout=xorout))
+    assert engine._run == engine._zlib
+    assert engine(data) == engine._table_driven(data)
 
 
 @given(data=st.binary(max_size=48))

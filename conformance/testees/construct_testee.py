@@ -4,18 +4,31 @@ conformance/PROTOCOL.md with the reference answers
 
     osdkc run --impl construct
     python conformance/testees/construct_testee.py   # speaks JSON Lines on stdin/stdout
+    python conformance/testees/construct_testee.py --bench FILE --profile P
 
 One request line in, one response line out, flushed. Input it cannot use
 (not JSON, not an object, missing or ill-typed arguments) is answered with
 error `bad_request`; an unexpected exception is answered with error
 `internal_error` (a failed case, never a crash).
+
+With arguments it runs the bench mode (osdk_conformance.testee_bench) over
+decode_stream's own event loop, decode.decode_events, without value models.
 """
 from __future__ import annotations
 
 import sys
+from typing import Sequence
 
 
-def main() -> int:
+def main(argv: Sequence[str] = ()) -> int:
+    if argv:
+        from osdk_conformance import testee_bench
+        from osdk_conformance.decode import decode_events
+        from osdk_conformance.reference import PROFILES
+
+        return testee_bench.main(argv, "construct", PROFILES,
+                                 lambda chunks, profile: decode_events(chunks, profile, models=False))
+
     from osdk_conformance.reference import answer
     from osdk_conformance.serve import serve
 
@@ -24,4 +37,4 @@ def main() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -3,6 +3,7 @@
 protocol of conformance/PROTOCOL.md.
 
     osdkc run --impl kaitai-python
+    python conformance/testees/kaitai_python_testee.py --bench FILE --profile P   # osdk_conformance.testee_bench
 
 Every layout, field, enum and `valid` check comes from the generated
 parsers. The glue below does only what a .ksy cannot:
@@ -61,14 +62,14 @@ import re
 import sys
 import traceback
 from io import BytesIO
-from typing import Any
+from typing import Any, Iterable, Iterator, Sequence
 
 from kaitaistruct import EndOfStreamError, KaitaiStream, KaitaiStruct, KaitaiStructError, ValidationFailedError
 
 from osdk_conformance import ksy, model
 from osdk_conformance.commands import command_name
 from osdk_conformance.crc import crc32
-from osdk_conformance.deframe import (HEADER_LEN, Deframer, Frame, Garbage, Rejected, frame_length,
+from osdk_conformance.deframe import (HEADER_LEN, Frame, Garbage, Rejected, deframe, frame_length,
                                       header_problem, split_chunks)
 from osdk_conformance.serve import serve
 from osdk_conformance.rules import classify_control_mode, input_ranges
@@ -321,10 +322,13 @@ def decode_frame(req: dict, profile: str) -> dict:
 
 
 class StreamDecoder:
-    """Events of a stream: Deframer boundaries, Kaitai values, ACK matching."""
+    """Events of a stream: Deframer boundaries, Kaitai values, ACK matching.
+    models=False leaves each value as Kaitai parsed it (the bench mode times
+    decoding, not the value model)."""
 
-    def __init__(self, profile: str) -> None:
+    def __init__(self, profile: str, models: bool = True) -> None:
         self.profile = profile
+        self.models = models
         self.pending: dict[tuple[int, int], tuple[int, int]] = {}
 
     def event(self, ev) -> dict:
@@ -356,12 +360,12 @@ class StreamDecoder:
                     except Rejection as r:
                         return {"offset": ev.offset, "kind": "error", "error": r.cls, "detail": r.detail,
                                 "length": len(ev.raw), "ack_of": out["ack_of"]}
-                    out["ack"] = payload_body_model(ack, f.data.ack_value)
+                    out["ack"] = payload_body_model(ack, f.data.ack_value) if self.models else ack.body
             elif f.session > 0:
                 self.pending[(f.session, f.seq)] = (int(f.data.cmd_set), f.data.cmd_id)
                 if len(self.pending) > PENDING_LIMIT:
                     self.pending.pop(next(iter(self.pending)))
-        out["frame"] = frame_model(f, ev.raw)
+        out["frame"] = frame_model(f, ev.raw) if self.models else f
         return out
 
 
@@ -370,11 +374,14 @@ def decode_stream(req: dict, profile: str) -> dict:
     sizes = _arg(req, "chunks", list)
     if not all(isinstance(s, int) and not isinstance(s, bool) and s >= 0 for s in sizes):
         raise BadRequest("argument 'chunks' must be a list of non-negative integers")
-    d, dec, events = Deframer(), StreamDecoder(profile), []
-    for chunk in split_chunks(data, sizes):
-        events += [dec.event(ev) for ev in d.feed(chunk)]
-    events += [dec.event(ev) for ev in d.finish()]
-    return {"events": events}
+    return {"events": list(stream_events(split_chunks(data, sizes), profile))}
+
+
+def stream_events(chunks: Iterable[bytes], profile: str, models: bool = True) -> Iterator[dict]:
+    """decode_stream's events, one read after another (also the bench mode's loop)."""
+    dec = StreamDecoder(profile, models)
+    for ev in deframe(chunks):
+        yield dec.event(ev)
 
 
 OPS = {
@@ -402,9 +409,14 @@ def answer(req: Any) -> dict:
         return {"ok": False, "error": r.cls, "detail": r.detail}
 
 
-def main() -> int:
+def main(argv: Sequence[str] = ()) -> int:
+    if argv:
+        from osdk_conformance import testee_bench
+
+        return testee_bench.main(argv, "kaitai-python", PROFILES,
+                                 lambda chunks, profile: stream_events(chunks, profile, models=False))
     return serve(answer)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -16,6 +16,8 @@ Modules, one per ksy file or concern:
   broadcast        the three broadcast profiles
   payload          command/ACK values by set, id, direction and profile
   frame            the frame, parse_frame, build_frame
+  compiled         Construct's compiler where it parses as the interpreter does
+                   (parse_frame uses it; compiled.parse for any other construct)
 
 At this level every top-level ksy type is exported under its ksy id; the
 parametrised ones (osdk_payload, osdk_frame) are functions of the ksy params.

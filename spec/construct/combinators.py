@@ -21,19 +21,30 @@ from __future__ import annotations
 import io
 from collections.abc import Callable
 
-from construct import Construct, FixedSized, If, SizeofError, evaluate, stream_write
+from construct import Construct, FixedSized, IfThenElse, Pass, SizeofError, evaluate, stream_write
 
-__all__ = ["when", "Call", "ExactSize"]
+from .compiled import SelfCompiling, emit, link, parser, value_code
+
+__all__ = ["when", "Cond", "Call", "ExactSize"]
+
+
+class Cond(SelfCompiling, IfThenElse):
+    """IfThenElse whose condition may be any context function (the compiler
+    emits only `this` expressions)."""
+
+    def _emitparse(self, code):
+        return (f"(({emit(self.thensubcon, code)}) if ({value_code(code, self.condfunc)}) "
+                f"else ({emit(self.elsesubcon, code)}))")
 
 
 def when(condition, subcon: Construct) -> Construct:
     """ksy `if: condition`: None when false; may be left out when building."""
-    field = If(condition, subcon)
+    field = Cond(condition, subcon, Pass)
     field.flagbuildnone = True
     return field
 
 
-class Call(Construct):
+class Call(SelfCompiling, Construct):
     """Use `factory(*args)` as the field's construct, args evaluated per parse/build."""
 
     def __init__(self, factory: Callable[..., Construct], *args) -> None:
@@ -53,9 +64,33 @@ class Call(Construct):
     def _sizeof(self, context, path):
         return self._resolve(context)._sizeof(context, path)
 
+    def _emitparse(self, code):
+        return f"{link(code, self)}._parse_compiled(io, this)"
 
-class ExactSize(FixedSized):
+    def _parse_compiled(self, stream, context):
+        sub = self._resolve(context)
+        fast = parser(sub)
+        if fast is None:
+            return sub._parsereport(stream, context, "(compiled)")
+        return fast.parsefunc(stream, context)
+
+
+class ExactSize(SelfCompiling, FixedSized):
     """FixedSized whose build fails unless the value is exactly `length` bytes."""
+
+    def _emitparse(self, code):
+        fname = f"parse_exactsize_{code.allocateId()}"
+        code.append(f"""
+            def {fname}(io, this):
+                length = {value_code(code, self.length)}
+                if length < 0:
+                    raise PaddingError
+                data = io.read(length)
+                if len(data) != length:
+                    raise StreamError
+                return restream(data, lambda io: {emit(self.subcon, code)})
+        """)
+        return f"{fname}(io, this)"
 
     def _build(self, obj, stream, context, path):
         length = evaluate(self.length, context)

@@ -17,6 +17,8 @@ import struct
 
 from construct import Adapter, Int32ul, Int64ul
 
+from .compiled import SelfCompiling, emit, link
+
 __all__ = ["IeeeFloat", "F32", "F64", "F32le", "F64le"]
 
 
@@ -26,11 +28,14 @@ class IeeeFloat:
     ieee_width: int = 0
     _pack: str = ""  # struct format of the same-width integer
     _fmt: str = ""   # struct format of the float
+    _end = 0         # 1 << ieee_width
 
     __slots__ = ("ieee_bits",)
 
     def __init__(self, bits: int) -> None:
-        if not isinstance(bits, int) or isinstance(bits, bool) or not 0 <= bits < (1 << self.ieee_width):
+        # `type(bits) is int` first: a decoder makes one per float field,
+        # and the two isinstance calls cost more than the rest
+        if (type(bits) is not int and (not isinstance(bits, int) or isinstance(bits, bool))) or not 0 <= bits < self._end:
             raise ValueError(f"{type(self).__name__} needs an integer 0..2**{self.ieee_width}-1, got {bits!r}")
         self.ieee_bits = bits
 
@@ -59,7 +64,7 @@ class IeeeFloat:
         return self.is_nan and not self.ieee_bits & self.quiet_bit
 
     def __float__(self) -> float:
-        return struct.unpack(self._fmt, struct.pack(self._pack, self.ieee_bits))[0]
+        return self._to_float(self._from_bits(self.ieee_bits))[0]
 
     def __eq__(self, other: object) -> bool:
         if isinstance(other, IeeeFloat):
@@ -81,6 +86,9 @@ class F32(IeeeFloat):
     ieee_width = 32
     _pack = "<I"
     _fmt = "<f"
+    _end = 1 << 32
+    _from_bits = struct.Struct(_pack).pack
+    _to_float = struct.Struct(_fmt).unpack
     __slots__ = ()
 
 
@@ -90,14 +98,19 @@ class F64(IeeeFloat):
     ieee_width = 64
     _pack = "<Q"
     _fmt = "<d"
+    _end = 1 << 64
+    _from_bits = struct.Struct(_pack).pack
+    _to_float = struct.Struct(_fmt).unpack
     __slots__ = ()
 
 
-class _IeeeAdapter(Adapter):
+class _IeeeAdapter(SelfCompiling, Adapter):
     """Little-endian IEEE float field whose value is an F32/F64 (the raw bits).
 
     Building accepts an F32/F64 of the right width, or any real number, which
     is rounded to the field's width."""
+
+    decode_needs_no_context = True  # compiled.py may decode it inside a merged read
 
     def __init__(self, subcon, cls: type[IeeeFloat]) -> None:
         super().__init__(subcon)
@@ -105,6 +118,9 @@ class _IeeeAdapter(Adapter):
 
     def _decode(self, obj, context, path):
         return self.cls(obj)
+
+    def _emitparse(self, code):
+        return f"{link(code, self)}._decode({emit(self.subcon, code)}, None, None)"
 
     def _encode(self, obj, context, path):
         if isinstance(obj, IeeeFloat):

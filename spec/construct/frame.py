@@ -20,14 +20,15 @@ import functools
 import struct
 
 from construct import (
-    BitsInteger, Bytes, Check, Const, Enum, Flag, GreedyBytes, IfThenElse, Int8ul, Int16ul, Int32ul, Struct,
+    BitsInteger, Bytes, Check, Const, Enum, Flag, GreedyBytes, Int8ul, Int16ul, Int32ul, Struct,
     this,
 )
 
 from osdk_conformance.crc import crc16, crc32
 
+from . import compiled
 from .bitfields import lsb_first, record
-from .combinators import Call, ExactSize, when
+from .combinators import Call, Cond, ExactSize, when
 from .enums import COMMAND_SET, ENCRYPTION, enum_int, profile_value
 from .payload import osdk_payload
 
@@ -122,7 +123,7 @@ def _frame(profile: int):
         _header_bits,
         "seq" / Int16ul,
         "crc16" / Int16ul,
-        "data" / when(_has_data, IfThenElse(_is_plain, ExactSize(_data_len, frame_data(profile)), Bytes(_data_len))),
+        "data" / when(_has_data, Cond(_is_plain, ExactSize(_data_len, frame_data(profile)), Bytes(_data_len))),
         "crc32" / when(_has_data, Int32ul),
     )
 
@@ -138,8 +139,9 @@ frame = osdk_frame
 
 def parse_frame(data: bytes, profile):
     """Parse one frame from the start of `data` (bytes after it are ignored,
-    as a stream parser would leave them for the next frame)."""
-    return osdk_frame(profile).parse(data)
+    as a stream parser would leave them for the next frame). Compiled where
+    that is safe (compiled.py); values and errors are the interpreter's."""
+    return compiled.parse(osdk_frame(profile), data)
 
 
 def build_frame(*, cmd_set=None, cmd_id=None, value: bytes = b"", is_ack: bool = False,

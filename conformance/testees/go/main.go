@@ -17,6 +17,9 @@ import (
 type jsonNumber = json.Number
 
 func main() {
+	if len(os.Args) > 1 { // --bench FILE --profile P (bench.go)
+		os.Exit(runBench(os.Args[1:]))
+	}
 	testee, loadErr := setup()
 	if loadErr != nil {
 		fmt.Fprintln(os.Stderr, "osdk-go-testee:", loadErr)

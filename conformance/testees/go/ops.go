@@ -340,10 +340,13 @@ type pendingCmd struct {
 // streamDecoder turns Deframer events into answer events: Kaitai values,
 // and ACKs typed by the command with the same session and SEQ seen earlier.
 // Pending commands are kept in first-seen order (a repeated key keeps its
-// place) and the oldest is forgotten beyond pendingLimit.
+// place) and the oldest is forgotten beyond pendingLimit. Without models,
+// values stay as the parsers returned them (the bench mode times decoding,
+// not the value model).
 type streamDecoder struct {
 	t       *Testee
 	profile k.OsdkPayload_Profile
+	models  bool
 	order   *list.List
 	pending map[pendingKey]*list.Element
 }
@@ -401,11 +404,13 @@ func (d *streamDecoder) frame(ev Event) (Obj, error) {
 					}
 					return nil, err
 				}
-				body, err := d.t.bodyModel(ack)
-				if err != nil {
+				if !d.models {
+					out = append(out, KV{"ack", ack.Body})
+				} else if body, err := d.t.bodyModel(ack); err != nil {
 					return nil, err
+				} else {
+					out = append(out, KV{"ack", body})
 				}
-				out = append(out, KV{"ack", body})
 			}
 		} else if f.Session > 0 {
 			cmd := pendingCmd{key, uint8(fd.CmdSet), fd.CmdId}
@@ -420,11 +425,39 @@ func (d *streamDecoder) frame(ev Event) (Obj, error) {
 			}
 		}
 	}
+	if !d.models {
+		return append(out, KV{"frame", f}), nil
+	}
 	m, err := d.t.model.Object(f)
 	if err != nil {
 		return nil, err
 	}
 	return append(out, KV{"frame", m}), nil
+}
+
+// eventStream is decode_stream's loop: each read through the deframer and
+// the stream decoder, each event to onEvent (also the bench mode's loop).
+type eventStream struct {
+	deframer *Deframer
+	dec      *streamDecoder
+	onEvent  func(Obj)
+}
+
+func (t *Testee) newEventStream(p k.OsdkPayload_Profile, models bool, onEvent func(Obj)) *eventStream {
+	dec := &streamDecoder{t: t, profile: p, models: models, order: list.New(), pending: map[pendingKey]*list.Element{}}
+	return &eventStream{deframer: NewDeframer(t.sums), dec: dec, onEvent: onEvent}
+}
+
+func (s *eventStream) Feed(chunk []byte) {
+	for _, ev := range s.deframer.Feed(chunk) {
+		s.onEvent(s.dec.event(ev))
+	}
+}
+
+func (s *eventStream) Finish() {
+	for _, ev := range s.deframer.Finish() {
+		s.onEvent(s.dec.event(ev))
+	}
 }
 
 func (t *Testee) decodeStream(r request, p k.OsdkPayload_Profile, _ string) (Obj, error) {
@@ -448,17 +481,12 @@ func (t *Testee) decodeStream(r request, p k.OsdkPayload_Profile, _ string) (Obj
 		}
 		sizes[i] = int(n)
 	}
-	dec := &streamDecoder{t: t, profile: p, order: list.New(), pending: map[pendingKey]*list.Element{}}
-	deframer := NewDeframer(t.sums)
 	events := []any{}
+	stream := t.newEventStream(p, true, func(ev Obj) { events = append(events, ev) })
 	for _, chunk := range splitChunks(data, sizes) {
-		for _, ev := range deframer.Feed(chunk) {
-			events = append(events, dec.event(ev))
-		}
+		stream.Feed(chunk)
 	}
-	for _, ev := range deframer.Finish() {
-		events = append(events, dec.event(ev))
-	}
+	stream.Finish()
 	return Obj{{"events", events}}, nil
 }
 

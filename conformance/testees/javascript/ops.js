@@ -102,9 +102,12 @@ function decodeFrame(req, profile) {
 }
 
 // Events of a stream: Deframer boundaries, Kaitai values, ACK matching.
+// models = false leaves each value as Kaitai parsed it (the bench mode times
+// decoding, not the value model).
 class StreamDecoder {
-  constructor(profile) {
+  constructor(profile, models = true) {
     this.profile = profile;
+    this.models = models;
     this.pending = new Map(); // "session.seq" -> [cmd_set, cmd_id], oldest first
   }
 
@@ -147,14 +150,14 @@ class StreamDecoder {
               length: ev.raw.length, ack_of: out.ack_of,
             };
           }
-          out.ack = modelOf(ack, f.data.ackValue).body;
+          out.ack = this.models ? modelOf(ack, f.data.ackValue).body : ack.body;
         }
       } else if (f.session > 0) {
         this.pending.set(key, [f.data.cmdSet, f.data.cmdId]);
         if (this.pending.size > PENDING_LIMIT) this.pending.delete(this.pending.keys().next().value);
       }
     }
-    out.frame = modelOf(f, ev.raw);
+    out.frame = this.models ? modelOf(f, ev.raw) : f;
     return out;
   }
 }
@@ -165,14 +168,22 @@ function decodeStream(req, profile) {
   if (!sizes.every((s) => Number.isInteger(s) && s >= 0)) {
     throw new BadRequest("argument 'chunks' must be a list of non-negative integers");
   }
-  const deframer = new Deframer();
-  const decoder = new StreamDecoder(profile);
   const events = [];
-  for (const chunk of splitChunks(data, sizes)) {
-    for (const ev of deframer.feed(chunk)) events.push(decoder.event(ev));
-  }
-  for (const ev of deframer.finish()) events.push(decoder.event(ev));
+  const stream = eventStream(profile, true, (ev) => events.push(ev));
+  for (const chunk of splitChunks(data, sizes)) stream.feed(chunk);
+  stream.finish();
   return { events };
+}
+
+// decode_stream's events, one read after another, each handed to onEvent
+// (also the bench mode's loop).
+function eventStream(profile, models, onEvent) {
+  const deframer = new Deframer();
+  const decoder = new StreamDecoder(profile, models);
+  return {
+    feed: (chunk) => { for (const ev of deframer.feed(chunk)) onEvent(decoder.event(ev)); },
+    finish: () => { for (const ev of deframer.finish()) onEvent(decoder.event(ev)); },
+  };
 }
 
 const OPS = {
@@ -200,4 +211,4 @@ function answer(req) {
   }
 }
 
-module.exports = { BadRequest, answer };
+module.exports = { BadRequest, PROFILES, answer, eventStream };

@@ -29,6 +29,8 @@ if (!nodePath.includes(RUNTIME)) {
   }
   if (run.signal) process.kill(process.pid, run.signal);
   process.exit(run.status === null ? 1 : run.status);
+} else if (process.argv.length > 2) {
+  process.exitCode = require('./bench').main(process.argv.slice(2)); // --bench FILE --profile P (bench.js)
 } else {
   serve();
 }

@@ -9,12 +9,18 @@
  * matches ACKs to commands in a stream (the pending table) and applies
  * the control-mode rules the tables hold. Request lines use the heap; the
  * decoder does not.
+ *
+ * With arguments (`--bench FILE --profile P`) it runs the bench mode
+ * instead: decode_stream's work on a file, counted, not printed.
  */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime for the bench mode */
+#include <errno.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "jsonread.h"
 #include "osdk_crc.h"
@@ -478,17 +484,21 @@ static void frame_error(stream_ctx_t *s, const osdk_event_t *ev, const osdk_erro
     write_event(s, &w);
 }
 
-static void on_frame(stream_ctx_t *s, const osdk_event_t *ev)
-{
+/* What decode_stream and the bench mode both make of a deframed frame. */
+typedef struct {
+    bool ok;             /* false: err says why the frame or its ACK value was rejected */
     osdk_error_t err;
-    osdk_json_t w;
-    const char *ack_of = NULL;
-    bool have_ack = false;
-    const char *command = NULL;
-    if (osdk_frame_decode(ev->raw, ev->length, osdk_profile_enum_values[s->profile], &g_frame, &err) != OSDK_OK) {
-        frame_error(s, ev, &err, NULL);
+    const char *command; /* a command frame's name */
+    const char *ack_of;  /* an ACK matched to a command earlier in the stream */
+    bool have_ack;       /* g_payload holds that ACK's value */
+} frame_result_t;
+
+/* Decode into g_frame (and g_payload for a matched ACK), keeping the pending table. */
+static void decode_stream_frame(stream_ctx_t *s, const osdk_event_t *ev, frame_result_t *r)
+{
+    memset(r, 0, sizeof *r);
+    if (osdk_frame_decode(ev->raw, ev->length, osdk_profile_enum_values[s->profile], &g_frame, &r->err) != OSDK_OK)
         return;
-    }
     if (g_frame.data_present && g_frame.data.tag == OSDK_FRAME_DATA_FRAME_DATA) {
         const osdk_frame_frame_data_t *fd = &g_frame.data.u.frame_data;
         if (g_frame.is_ack) {
@@ -496,29 +506,39 @@ static void on_frame(stream_ctx_t *s, const osdk_event_t *ev)
             if (at >= 0) {
                 pending_t p = s->pending[at];
                 pending_remove(s, (size_t)at);
-                ack_of = osdk_command_name(p.cmd_set, p.cmd_id);
+                r->ack_of = osdk_command_name(p.cmd_set, p.cmd_id);
                 if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, p.cmd_set, p.cmd_id, true,
-                                        osdk_profile_enum_values[s->profile], &g_payload, &err) != OSDK_OK) {
-                    frame_error(s, ev, &err, ack_of);
+                                        osdk_profile_enum_values[s->profile], &g_payload, &r->err) != OSDK_OK)
                     return;
-                }
-                have_ack = true;
+                r->have_ack = true;
             }
         } else {
-            command = osdk_command_name(fd->cmd_set, fd->cmd_id);
+            r->command = osdk_command_name(fd->cmd_set, fd->cmd_id);
             if (g_frame.session > 0) pending_put(s, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
         }
     }
+    r->ok = true;
+}
+
+static void on_frame(stream_ctx_t *s, const osdk_event_t *ev)
+{
+    frame_result_t r;
+    osdk_json_t w;
+    decode_stream_frame(s, ev, &r);
+    if (!r.ok) {
+        frame_error(s, ev, &r.err, r.ack_of);
+        return;
+    }
     event_head(&w, ev->offset, "frame");
-    if (command) {
+    if (r.command) {
         osdk_json_key(&w, "command");
-        osdk_json_string(&w, command);
+        osdk_json_string(&w, r.command);
     }
-    if (ack_of) {
+    if (r.ack_of) {
         osdk_json_key(&w, "ack_of");
-        osdk_json_string(&w, ack_of);
+        osdk_json_string(&w, r.ack_of);
     }
-    if (have_ack) {
+    if (r.have_ack) {
         osdk_json_key(&w, "ack");
         osdk_payload_field_to_json(&g_payload, "body", &w);
     }
@@ -608,6 +628,109 @@ static void op_decode_stream(const jv_t *req, int profile)
     fputs("]}}\n", stdout);
     fflush(stdout);
     free(data);
+}
+
+/* ---- bench mode (conformance/PROTOCOL.md, "Bench mode") --------------------------------------------------- */
+
+#define BENCH_READ (64u * 1024u)
+#define BENCH_USAGE "usage: --bench FILE|- --profile P"
+
+typedef struct {
+    stream_ctx_t *stream;
+    uint64_t frames, errors, garbage_bytes;
+} bench_ctx_t;
+
+/* decode_stream's work per event, counted instead of written as JSON */
+static void bench_event(void *user, const osdk_event_t *ev)
+{
+    bench_ctx_t *b = user;
+    frame_result_t r;
+    switch (ev->kind) {
+    case OSDK_EVENT_FRAME:
+        decode_stream_frame(b->stream, ev, &r);
+        if (r.ok) b->frames++;
+        else b->errors++;
+        return;
+    case OSDK_EVENT_GARBAGE:
+        b->garbage_bytes += ev->length;
+        return;
+    case OSDK_EVENT_ERROR:
+    default:
+        b->errors++;
+        return;
+    }
+}
+
+static double monotonic_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
+}
+
+static int bench_fail(const char *fmt, const char *a, const char *b)
+{
+    fputs("osdk-c-testee --bench: ", stderr);
+    fprintf(stderr, fmt, a, b);
+    fputc('\n', stderr);
+    return 2;
+}
+
+static int bench_main(int argc, char **argv)
+{
+    static uint8_t chunk[BENCH_READ];
+    const char *path = NULL, *profile_id = NULL;
+    bench_ctx_t b;
+    osdk_deframer_t d;
+    FILE *in;
+    uint64_t total = 0;
+    size_t n;
+    double start, seconds;
+    int i, profile;
+    for (i = 1; i < argc; i += 2) {
+        const char **slot = strcmp(argv[i], "--bench") == 0     ? &path
+                            : strcmp(argv[i], "--profile") == 0 ? &profile_id
+                                                                : NULL;
+        if (!slot) return bench_fail("unknown argument '%s'; %s", argv[i], BENCH_USAGE);
+        if (i + 1 >= argc) return bench_fail("%s needs a value; %s", argv[i], BENCH_USAGE);
+        if (*slot) return bench_fail("%s given twice; %s", argv[i], BENCH_USAGE);
+        *slot = argv[i + 1];
+    }
+    if (!path || !profile_id) return bench_fail("%s%s", BENCH_USAGE, "");
+    profile = osdk_profile_index(profile_id);
+    if (profile < 0) {
+        char known[128] = "";
+        for (i = 0; i < OSDK_PROFILE_COUNT; i++) {
+            if (i) strncat(known, ", ", sizeof known - strlen(known) - 1);
+            strncat(known, osdk_profile_ids[i], sizeof known - strlen(known) - 1);
+        }
+        return bench_fail("unknown profile '%s' (known: %s)", profile_id, known);
+    }
+    in = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    if (!in) return bench_fail("cannot read %s: %s", path, strerror(errno));
+    memset(&g_stream, 0, sizeof g_stream);
+    g_stream.profile = profile;
+    memset(&b, 0, sizeof b);
+    b.stream = &g_stream;
+    osdk_deframer_init(&d, g_window, sizeof g_window);
+    start = monotonic_seconds();
+    while ((n = fread(chunk, 1, sizeof chunk, in)) > 0) {
+        total += n;
+        osdk_deframer_feed(&d, chunk, n, bench_event, &b);
+    }
+    if (ferror(in)) {
+        int e = errno;
+        if (in != stdin) fclose(in);
+        return bench_fail("cannot read %s: %s", path, strerror(e));
+    }
+    osdk_deframer_finish(&d, bench_event, &b);
+    seconds = monotonic_seconds() - start;
+    if (in != stdin) fclose(in);
+    printf("{\"impl\": \"c\", \"profile\": \"%s\", \"bytes\": %llu, \"frames\": %llu, \"errors\": %llu, "
+           "\"garbage_bytes\": %llu, \"seconds\": %.6f}\n",
+           osdk_profile_ids[profile], (unsigned long long)total, (unsigned long long)b.frames,
+           (unsigned long long)b.errors, (unsigned long long)b.garbage_bytes, seconds);
+    return fflush(stdout) == 0 ? 0 : 2;
 }
 
 /* ---- encoders ------------------------------------------------------------------------------------------- */
@@ -775,11 +898,12 @@ static void answer(const char *line, size_t len)
     jv_free(req);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     char *line = NULL;
     size_t cap = 0, len = 0;
     int c;
+    if (argc > 1) return bench_main(argc, argv);
     g_event_buf = malloc(EVENT_BUF);
     if (!g_event_buf) return 1;
     for (;;) {

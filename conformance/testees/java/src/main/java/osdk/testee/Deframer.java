@@ -58,7 +58,12 @@ final class Deframer {
     private long garbageStart = -1;
 
     List<Event> feed(byte[] chunk) {
-        append(chunk);
+        return feed(chunk, chunk.length);
+    }
+
+    /** The first n bytes of chunk, which is not kept: a reader can reuse it. */
+    List<Event> feed(byte[] chunk, int n) {
+        append(chunk, n);
         return scan(false);
     }
 
@@ -182,19 +187,19 @@ final class Deframer {
         base += n;
     }
 
-    private void append(byte[] chunk) {
+    private void append(byte[] chunk, int n) {
         int live = end - start;
-        if (buf.length - end < chunk.length) {
+        if (buf.length - end < n) {
             // Compact, growing only when the live part itself needs it: memory
             // stays bounded by one frame plus the read size.
-            byte[] next = live + chunk.length <= buf.length ? buf : new byte[Math.max(2 * buf.length, live + chunk.length)];
+            byte[] next = live + n <= buf.length ? buf : new byte[Math.max(2 * buf.length, live + n)];
             System.arraycopy(buf, start, next, 0, live);
             buf = next;
             start = 0;
             end = live;
         }
-        System.arraycopy(chunk, 0, buf, end, chunk.length);
-        end += chunk.length;
+        System.arraycopy(chunk, 0, buf, end, n);
+        end += n;
     }
 
     static int u8(byte[] b, int i) {

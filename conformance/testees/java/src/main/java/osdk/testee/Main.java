@@ -22,6 +22,9 @@ public final class Main {
     }
 
     public static void main(String[] args) throws IOException {
+        if (args.length > 0) { // --bench FILE --profile P (Bench.java)
+            System.exit(Bench.main(args));
+        }
         BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
         OutputStream out = new BufferedOutputStream(new FileOutputStream(FileDescriptor.out), 1 << 16);
         String line;

@@ -181,17 +181,12 @@ final class Operations {
     private static Map<String, Object> decodeStream(Map<String, Object> req, String profile) {
         byte[] data = hexArg(req);
         List<Long> sizes = chunksArg(req);
-        Deframer d = new Deframer();
-        StreamDecoder dec = new StreamDecoder(profile);
         List<Object> events = new ArrayList<>();
+        EventStream stream = new EventStream(profile, true, events::add);
         for (byte[] chunk : Deframer.splitChunks(data, sizes)) {
-            for (Deframer.Event ev : d.feed(chunk)) {
-                events.add(dec.event(ev));
-            }
+            stream.feed(chunk, chunk.length);
         }
-        for (Deframer.Event ev : d.finish()) {
-            events.add(dec.event(ev));
-        }
+        stream.finish();
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("events", events);
         return out;

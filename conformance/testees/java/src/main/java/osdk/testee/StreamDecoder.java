@@ -11,17 +11,20 @@ import osdk_kaitai.OsdkPayload;
  * generated parsers, and ACK matching. An ACK's value is typed by the
  * command with the same session and SEQ seen earlier in the stream; at most
  * PENDING_LIMIT unanswered commands are remembered, the oldest forgotten
- * first.
+ * first. Without models, values stay as the parsers returned them (the
+ * bench mode times decoding, not the value model).
  */
 final class StreamDecoder {
     static final int PENDING_LIMIT = 1024;
 
     private final String profile;
+    private final boolean models;
     // (session, seq) -> (cmd_set, cmd_id), in the order first seen
     private final Map<Long, int[]> pending = new LinkedHashMap<>();
 
-    StreamDecoder(String profile) {
+    StreamDecoder(String profile, boolean models) {
         this.profile = profile;
+        this.models = models;
     }
 
     Map<String, Object> event(Deframer.Event ev) {
@@ -48,7 +51,7 @@ final class StreamDecoder {
 
     private Map<String, Object> frame(Deframer.Event ev) throws Rejection {
         OsdkFrame f = Operations.frame(ev.raw, profile);
-        Map<String, Object> model = ValueModel.of(f, ev.raw);
+        Map<String, Object> model = models ? ValueModel.of(f, ev.raw) : null;
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("offset", ev.offset);
         out.put("kind", "frame");
@@ -69,14 +72,11 @@ final class StreamDecoder {
                         err.put("ack_of", ackOf);
                         return err;
                     }
-                    out.put("ack", Operations.bodyModel(ack, value));
+                    out.put("ack", models ? Operations.bodyModel(ack, value) : ack.body());
                 }
             } else if (f.session() > 0) {
-                // the number, also for a command set the spec has no name for
-                @SuppressWarnings("unchecked")
-                Map<String, Object> cmdSet = (Map<String, Object>) ((Map<String, Object>) model.get("data")).get("cmd_set");
-                int set = (int) (long) (Long) cmdSet.get("value");
-                pending.put(key, new int[] {set, data.cmdId()});
+                // cmd_set_code: the number, also for a command set the spec has no name for
+                pending.put(key, new int[] {data.cmdSetCode(), data.cmdId()});
                 if (pending.size() > PENDING_LIMIT) {
                     Iterator<Long> oldest = pending.keySet().iterator();
                     oldest.next();
@@ -84,7 +84,7 @@ final class StreamDecoder {
                 }
             }
         }
-        out.put("frame", model);
+        out.put("frame", models ? model : f);
         return out;
     }
 

@@ -1,0 +1,152 @@
+"""`osdkc bench` on short corpora: every implementation's bench mode reports
+the counts the corpus generator wrote, the JSON and Markdown reports have
+their shape, and bad arguments are one-line usage errors. No timing is
+asserted anywhere: speed is what `osdkc bench` reports, not what a test checks."""
+from __future__ import annotations
+
+import json
+import random
+import subprocess
+import sys
+
+import pytest
+
+from osdk_conformance import bench_corpus
+from osdk_conformance.bench_decode import BASELINE, cross_check, impl_names
+from osdk_conformance.bench_report import BEGIN, END
+from osdk_conformance.cli import main
+from osdk_conformance.decode import decode_events
+from osdk_conformance.paths import ROOT
+
+SECONDS = 3.0   # of traffic per corpus: enough for every kind of frame and fault, quick to decode
+OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
+
+
+def osdkc(*args: str, timeout: float = 300) -> subprocess.CompletedProcess:
+    return subprocess.run([*OSDKC, *args], capture_output=True, text=True, cwd=ROOT, timeout=timeout,
+                          stdin=subprocess.DEVNULL)
+
+
+@pytest.fixture(scope="module")
+def bench_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("bench")
+    proc = osdkc("bench", "--only", "decode", "--corpus-seconds", f"{SECONDS:g}", "--repeats", "1",
+                 "--json", str(out / "bench.json"), "--markdown", str(out / "bench.md"))
+    return proc, out
+
+
+def test_every_implementation_counts_what_the_generator_wrote(bench_run):
+    proc, out = bench_run
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    result = json.loads((out / "bench.json").read_text())
+    decode = result["decode"]
+    assert decode["mismatches"] == []
+    assert [c["name"] for c in decode["corpora"]] == list(bench_corpus.CORPORA)
+    for c in decode["corpora"]:
+        written = bench_corpus.corpus(c["name"], SECONDS)
+        assert c["expected"] == written.expected()
+        assert c["bytes"] == written.bytes
+        assert [r["impl"] for r in c["results"]] == impl_names()
+        for r in c["results"]:
+            assert r["ok"], r
+            assert r["counts"] == written.expected(), (c["name"], r["impl"])
+            assert r["agrees"] is True
+
+
+def test_corpus_sizes_follow_from_their_rates():
+    hour = bench_corpus.corpus("a3-hour", SECONDS)
+    assert (hour.frames, hour.errors, hour.garbage_bytes) == (300, 0, 0)   # 100 Hz, every frame intact
+    assert hour.bytes == 300 * (12 + 2 + 2 + 198 + 4)                        # every a3-fw3.1 item in each
+    for profile in ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1"):
+        mixed = bench_corpus.corpus(f"{profile}-mixed", SECONDS)
+        # 50 Hz of broadcasts (intact or broken) and as many movement commands, plus the start-up exchanges
+        assert mixed.frames + mixed.errors == 2 * 150 + 2 * 5
+        assert mixed.garbage_bytes > 0
+
+
+def test_corpus_values_move_like_a_flight():
+    hour = bench_corpus.corpus("a3-hour", SECONDS)
+    with open(hour.path, "rb") as fh:
+        events = list(decode_events([fh.read()], "a3-fw3.1"))
+    data = [ev["frame"]["data"]["value"]["body"]["data"] for ev in events]
+    assert [ev["frame"]["seq"] for ev in events] == list(range(len(events)))
+    assert [d["time_stamp"]["time"] for d in data[:5]] == [0, 4, 8, 12, 16]   # 400 Hz ticks at 100 Hz
+    assert len({d["quaternion"]["q3"]["f32"] for d in data}) > 100            # the attitude moves
+    assert all(set(d) >= {"gps_detail", "rtk_detail", "control_info"} for d in data)
+
+
+def test_reports_have_their_shape(bench_run):
+    proc, out = bench_run
+    result = json.loads((out / "bench.json").read_text())
+    assert result["command"].startswith("osdkc bench --only decode")
+    assert {"cpu", "cores", "memory", "kernel", "python", "gcc", "git"} <= set(result["machine"])
+    row = result["decode"]["corpora"][0]["results"][0]
+    assert row["impl"] == BASELINE and row["ratio_to_baseline"] == 1.0
+    for r in result["decode"]["corpora"][0]["results"]:
+        assert {"seconds", "frames_per_s", "mb_per_s", "peak_rss_mib", "ratio_to_baseline", "runs"} <= set(r)
+        assert r["peak_rss_mib"] > 0
+    assert [t["met"] for t in result["targets"]][2:] == [None, None]   # run and acceptance did not run
+    md = (out / "bench.md").read_text()
+    assert md.startswith(BEGIN) and md.rstrip().endswith(END)
+    for impl in impl_names():
+        assert f"| `{impl}` |" in md
+    for name in bench_corpus.CORPORA:
+        assert name in proc.stdout
+
+
+def test_markdown_replaces_only_its_block(tmp_path, bench_run):
+    _, out = bench_run
+    doc = tmp_path / "PERFORMANCE.md"
+    doc.write_text(f"# Title\n\nprose before\n\n{BEGIN}\nold numbers\n{END}\n\nprose after\n")
+    from osdk_conformance.bench_report import markdown, write_markdown
+
+    result = json.loads((out / "bench.json").read_text())
+    write_markdown(doc, markdown(result))
+    text = doc.read_text()
+    assert "old numbers" not in text
+    assert text.startswith("# Title\n\nprose before\n\n" + BEGIN) and text.endswith(END + "\n\nprose after\n")
+
+
+def test_a_capture_of_unknown_content_is_checked_between_implementations(tmp_path):
+    hour = bench_corpus.corpus("a3-hour", SECONDS)
+    rng = random.Random(7)
+    capture = tmp_path / "capture.bin"
+    with open(hour.path, "rb") as fh:
+        frames = fh.read()
+    capture.write_bytes(rng.randbytes(5000) + frames[:20000] + rng.randbytes(5000) + frames[:777])
+    proc = osdkc("bench", "--only", "decode", "--input", str(capture), "--profile", "a3-fw3.1",
+                 "--impl", f"{BASELINE},c,go", "--repeats", "1", "--json", str(tmp_path / "b.json"))
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    (c,) = json.loads((tmp_path / "b.json").read_text())["decode"]["corpora"]
+    assert c["expected"] is None
+    counts = [r["counts"] for r in c["results"]]
+    assert counts[0]["bytes"] == capture.stat().st_size and counts[0]["errors"] > 0
+    assert counts == [counts[0]] * 3
+
+
+def test_a_count_mismatch_names_the_implementation():
+    corpus = bench_corpus.Corpus(name="x", profile="a3-fw3.1", seconds=1.0, path="x.bin", bytes=10, frames=2,
+                                 errors=0, garbage_bytes=0, description="")
+    good = {"bytes": 10, "frames": 2, "errors": 0, "garbage_bytes": 0}
+    results = [{"impl": "c", "counts": dict(good)}, {"impl": "go", "counts": {**good, "frames": 1, "errors": 1}},
+               {"impl": "java", "ok": False, "error": "exit 1"}]
+    (line,) = cross_check(corpus, results, corpus.expected())
+    assert line == "x: go counts frames 1 (want 2), errors 1 (want 0), per the corpus generator"
+    assert [r.get("agrees") for r in results] == [True, False, None]
+
+
+@pytest.mark.parametrize("args, message", [
+    (("--only", "decode,nosuch"), "unknown section 'nosuch'"),
+    (("--impl", "cobol"), "unknown implementation 'cobol'"),
+    (("--corpora", "a-day"), "unknown corpus 'a-day'"),
+    (("--repeats", "0"), "--repeats must be at least 1"),
+    (("--input", "/nonexistent/capture.bin", "--profile", "a3-fw3.1"), "cannot read /nonexistent/capture.bin"),
+    (("--input", "x.bin"), "--input and --profile go together"),
+    (("--markdown", "/nonexistent/dir/out.md"), "--markdown /nonexistent/dir/out.md: directory"),
+])
+def test_bad_arguments_are_one_line_usage_errors(args, message, capsys):
+    assert main(["bench", *args]) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0], err
