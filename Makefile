@@ -34,9 +34,11 @@ $(JS_OK): tools/ksc/package.json tools/ksc/package-lock.json
 
 regen: setup
 	$(BIN)/python tools/regen.py
+	$(BIN)/python tools/gen_schemas.py
 
 check-generated: setup
 	$(BIN)/python tools/regen.py --check
+	$(BIN)/python tools/gen_schemas.py --check
 
 # Regenerate the golden vectors (vectors/*.json, MANIFEST.json) from the spec.
 vectors: setup

@@ -9,6 +9,9 @@ Sections (`--only`, default all, in this order):
 - run: wall and CPU time of `osdkc run --impl all`.
 - fuzz: executions per second of `osdkc fuzz --impl all` (fixed examples and seed).
 - acceptance: CPU use of the acceptance receiver at 100 Hz (`osdkc soak --json`).
+- reliability (only when named in --only: it takes about an hour):
+  healthy active runs of `osdkc device` that must all pass, and seeded runs
+  of every simulator fault that must all be detected (bench_reliability).
 
 Nothing here asserts a speed: the numbers are printed, written as JSON
 (--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
@@ -28,7 +31,8 @@ from pathlib import Path
 
 from .errors import UsageError
 
-SECTIONS = ("decode", "run", "fuzz", "acceptance")
+SECTIONS = ("decode", "run", "fuzz", "acceptance", "reliability")
+DEFAULT_SECTIONS = SECTIONS[:4]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
     "fuzz_examples": (2000, 200),
@@ -36,36 +40,49 @@ DEFAULTS = {  # (full, --quick)
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
+RELIABILITY_RUNS, FAULT_RUNS, LOAD_SHARE = 200, 20, 0.25
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
     from .bench_corpus import CORPORA
     from .bench_decode import impl_names
+    from .options import non_negative_int, positive_float, positive_int, probability
 
     ap.add_argument("--only", metavar="SECTIONS",
-                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all)")
+                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability)")
     ap.add_argument("--quick", action="store_true",
                     help=f"a fast check: corpora of {QUICK_CORPUS_SECONDS:g} s, "
                          f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak")
     ap.add_argument("--corpora", metavar="NAMES",
                     help=f"comma-separated corpora (default all: {', '.join(CORPORA)})")
-    ap.add_argument("--corpus-seconds", type=float, metavar="S", help="make every corpus S seconds of traffic long")
+    ap.add_argument("--corpus-seconds", type=positive_float, metavar="S", help="make every corpus S seconds of traffic long")
     ap.add_argument("--input", metavar="FILE",
                     help="decode this capture (raw bytes) instead of the corpora; needs --profile")
     ap.add_argument("--profile", choices=profiles, help="the wire profile of --input")
     ap.add_argument("--impl", metavar="NAMES",
                     help=f"comma-separated implementations (default all: {', '.join(impl_names())})")
-    ap.add_argument("--repeats", type=int, default=REPEATS, metavar="N",
+    ap.add_argument("--repeats", type=positive_int, default=REPEATS, metavar="N",
                     help=f"runs per implementation and corpus; the best counts (default {REPEATS})")
-    ap.add_argument("--budget", type=float, default=BUDGET, metavar="S",
+    ap.add_argument("--budget", type=positive_float, default=BUDGET, metavar="S",
                     help="no further runs of an implementation on a corpus once its runs took S seconds "
                          f"(default {BUDGET:g})")
-    ap.add_argument("--timeout", type=float, default=TIMEOUT, metavar="S",
+    ap.add_argument("--timeout", type=positive_float, default=TIMEOUT, metavar="S",
                     help=f"seconds one run (of any section) may take (default {TIMEOUT:g})")
-    ap.add_argument("--fuzz-examples", type=int, metavar="N",
+    ap.add_argument("--fuzz-examples", type=positive_int, metavar="N",
                     help="examples of the fuzz section (default %d, quick %d)" % DEFAULTS["fuzz_examples"])
-    ap.add_argument("--soak-seconds", type=float, metavar="S",
+    ap.add_argument("--soak-seconds", type=positive_float, metavar="S",
                     help="seconds of the acceptance section (default %g, quick %g)" % DEFAULTS["soak_seconds"])
+    ap.add_argument("--runs", type=non_negative_int, default=RELIABILITY_RUNS, metavar="N",
+                    help=f"reliability: healthy active runs (default {RELIABILITY_RUNS})")
+    ap.add_argument("--fault-runs", type=non_negative_int, default=FAULT_RUNS, metavar="N",
+                    help=f"reliability: seeded runs of each simulator fault (default {FAULT_RUNS})")
+    ap.add_argument("--load-share", type=probability, default=LOAD_SHARE, metavar="FRAC",
+                    help=f"reliability: share of the healthy runs beside a busy loop on every core "
+                         f"(default {LOAD_SHARE:g})")
+    ap.add_argument("--fault-kinds", metavar="KINDS",
+                    help="reliability: comma-separated simulator faults to run (default all)")
+    ap.add_argument("--parallel", type=positive_int, default=1, metavar="N",
+                    help="reliability: runs at a time (default 1)")
     ap.add_argument("--json", metavar="FILE", help="write every number as JSON")
     ap.add_argument("--markdown", metavar="FILE",
                     help="write the tables, command and machine as Markdown; in a file with a bench block "
@@ -97,31 +114,27 @@ def _writable(path: str | None, option: str) -> Path | None:
 def command_line(args: argparse.Namespace) -> str:
     """The options of this run as a command someone can repeat."""
     parts = ["osdkc", "bench"]
-    for opt in ("only", "corpora", "corpus_seconds", "input", "profile", "impl", "fuzz_examples", "soak_seconds"):
+    for opt in ("only", "corpora", "corpus_seconds", "input", "profile", "impl", "fuzz_examples", "soak_seconds",
+                "fault_kinds"):
         v = getattr(args, opt)
         if v is not None:
             parts += [f"--{opt.replace('_', '-')}", f"{v:g}" if isinstance(v, float) else str(v)]
     if args.quick:
         parts.append("--quick")
-    for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT)):
+    for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),
+                         ("fault_runs", FAULT_RUNS), ("load_share", LOAD_SHARE), ("parallel", 1)):
         if getattr(args, opt) != default:
-            parts += [f"--{opt}", f"{getattr(args, opt):g}"]
+            parts += [f"--{opt.replace('_', '-')}", f"{getattr(args, opt):g}"]
     return " ".join(parts)
 
 
 def run_bench(args: argparse.Namespace) -> int:
     from . import bench_corpus, bench_decode, bench_report, bench_sections
 
-    sections = _names(args.only, SECTIONS, "section")
+    sections = _names(args.only, SECTIONS, "section") if args.only else list(DEFAULT_SECTIONS)
+    from .bench_reliability import FAULT_CASES
+    kinds = _names(args.fault_kinds, tuple(FAULT_CASES), "fault kind")
     impls = _names(args.impl, bench_decode.impl_names(), "implementation")
-    if args.repeats < 1:
-        raise UsageError("--repeats must be at least 1")
-    for opt in ("budget", "timeout", "corpus_seconds", "soak_seconds"):
-        v = getattr(args, opt)
-        if v is not None and not v > 0:
-            raise UsageError(f"--{opt.replace('_', '-')} must be positive")
-    if args.fuzz_examples is not None and args.fuzz_examples < 1:
-        raise UsageError("--fuzz-examples must be at least 1")
     if (args.input is None) != (args.profile is None):
         raise UsageError("--input and --profile go together")
     if args.input is not None and (args.corpora or args.corpus_seconds):
@@ -156,6 +169,13 @@ def run_bench(args: argparse.Namespace) -> int:
     if "acceptance" in sections:
         _log(f"acceptance: osdkc soak, {soak_seconds:g} s")
         result["acceptance"] = bench_sections.acceptance(soak_seconds, args.timeout + soak_seconds)
+    if "reliability" in sections:
+        from . import bench_reliability
+
+        _log(f"reliability: {args.runs} healthy active runs, {args.fault_runs} seeded runs of each fault")
+        result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.load_share, args.parallel,
+                                                          kinds)
+        result["reliability"]["command"] = command_line(args)
     result["total_seconds"] = round(time.monotonic() - t0, 1)
     result["machine"]["load_average_at_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
     result["targets"] = bench_report.targets(result)
@@ -176,7 +196,7 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("run", "fuzz", "acceptance") if s in result)
+    return all(result[s]["ok"] for s in ("run", "fuzz", "acceptance", "reliability") if s in result)
 
 
 def _log(text: str) -> None:

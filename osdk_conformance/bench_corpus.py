@@ -42,6 +42,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
+from osdk_construct.payload import VERSION_ID_SIZE, has_version_id
+
 from .errors import UsageError
 from .paths import ROOT, SPEC
 
@@ -433,7 +435,9 @@ def _write(spec: CorpusSpec, seconds: float, w: _Writer) -> None:
 def _exchanges(prof, k: int) -> list[tuple[tuple[int, int], dict, dict]]:
     """The command/ACK exchanges of the k-th ten-second slot: the start-up sequence first, then heartbeats."""
     version = ((0x00, 0x00), {"arbitrary": 0},
-               {"ack_code": "activated", "version_crc": 0x5A17C0DE, "version_name": b"BENCH-FC".ljust(32, b"\0")})
+               {"ack_code": "activated", "version_crc": 0x5A17C0DE,
+                "version_id": b"BENCH-ID".ljust(VERSION_ID_SIZE, b"\0") if has_version_id(prof.name) else None,
+                "version_name": b"BENCH-FC".ljust(32, b"\0")})
     if k:
         return [version]
     return [

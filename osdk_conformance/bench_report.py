@@ -86,7 +86,23 @@ def targets(result: dict) -> list[dict]:
     out.append({"target": "acceptance receiver < 5% of one core at 100 Hz",
                 "measured": f"{cpu}% of one core" if cpu is not None else "not measured",
                 "met": cpu < 5 if cpu is not None else None})
+    out += _reliability_targets(result.get("reliability"))
     return out
+
+
+def _reliability_targets(rel: dict | None) -> list[dict]:
+    if rel is None:
+        return []
+    h, faults = rel["healthy"], rel["faults"]
+    fault_runs = min((f["runs"] for f in faults.values()), default=0)
+    return [{"target": "0 FAILs in ≥ 200 active runs against a healthy simulator, some under CPU load",
+             "measured": f"{h['passed']} of {h['runs']} passed, {h['under_load']} under load, "
+                         f"{h['retransmissions']} retransmissions",
+             "met": h["runs"] >= 200 and h["under_load"] > 0 and h["passed"] == h["runs"]},
+            {"target": "each simulator fault kind detected in every one of ≥ 20 seeded runs",
+             "measured": (f"{len(faults)} kinds: detected in {sum(f['detected'] for f in faults.values())} of "
+                          f"{sum(f['runs'] for f in faults.values())} runs") if faults else "not measured",
+             "met": (fault_runs >= 20 and all(not f["missed"] for f in faults.values())) if faults else None}]
 
 
 def _verdict(met) -> str:
@@ -115,6 +131,11 @@ def _others(result: dict) -> list[tuple[str, str, str]]:
                     f"p99 {lat.get('p99')} ms")
         rows.append(("acceptance receiver, a3-fw3.1 every item at 100 Hz", acc["command"],
                      text + ("" if acc["ok"] else f"; FAILED: {acc.get('error')}")))
+    if rel := result.get("reliability"):
+        from .bench_reliability import summary
+
+        rows.append(("reliability of osdkc device: healthy active runs, seeded faults", rel["command"],
+                     summary(rel) + f" ({rel['seconds']:.0f} s)"))
     return rows
 
 

@@ -14,7 +14,7 @@ File layout (pcapng, little-endian, one section):
 Every block is written whole and flushed at once; the file is fsynced at
 most `fsync_interval` seconds apart and on close. A process killed at any
 moment leaves complete blocks followed by at most one partial block, and
-`read_capture` reads every complete block and reports the partial one.
+`CaptureReader` reads every complete block and reports the partial one.
 Wireshark opens the file (the payload shows as "User 0" data; a dissector is
 not needed to see the bytes and their times).
 """
@@ -25,9 +25,11 @@ import os
 import struct
 import threading
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
-from typing import Iterator
+from typing import Iterable, Iterator
 
 SHB_TYPE = 0x0A0D0D0A
 IDB_TYPE = 0x00000001
@@ -130,19 +132,26 @@ class Record:
 
 @dataclass
 class Capture:
+    """A whole capture in memory (small captures, tests); CaptureReader streams."""
     comment: dict = field(default_factory=dict)
     records: list[Record] = field(default_factory=list)
     partial_tail: int = 0          # bytes of an incomplete last block (a killed writer)
     interfaces: list[dict] = field(default_factory=list)
 
-    def received(self) -> Iterator[bytes]:
-        for r in self.records:
-            if r.direction == RX:
-                yield r.data
-
 
 class CaptureError(ValueError):
     pass
+
+
+READ_SIZE = 64 * 1024
+# The longest block accepted. The writer's blocks hold one read() of at most
+# 64 KiB; a length beyond this is corruption, and reading it whole would make
+# memory depend on a damaged length field.
+MAX_BLOCK_LENGTH = 16 << 20
+# Standard block types (pcapng, IETF draft, section 11.1) that carry nothing
+# a capture of a serial link needs: skipped. Any other type is corruption.
+SKIPPED_BLOCK_TYPES = frozenset({0x2, 0x3, 0x4, 0x5, 0x7, 0x8, 0x9, 0xA, 0xBAD, 0x40000BAD})
+MIN_BLOCK_LENGTH = {SHB_TYPE: 28, IDB_TYPE: 20, EPB_TYPE: 32}  # 12 + the fixed fields of each
 
 
 def _parse_options(buf: bytes, e: str) -> dict[int, bytes]:
@@ -158,62 +167,138 @@ def _parse_options(buf: bytes, e: str) -> dict[int, bytes]:
     return out
 
 
-def read_capture(path: str | Path) -> Capture:
-    """Every complete block of a capture this module wrote (any single-section
-    pcapng with EPBs on byte-stream interfaces reads the same way)."""
-    return parse_capture(Path(path).read_bytes(), str(path))
+class CaptureReader:
+    """The records of a pcapng capture, read block by block from `chunks`
+    (the file's bytes in pieces of any size), so memory stays bounded by the
+    longest block whatever the file's size. Block lengths, types and
+    interface ids are checked; damage raises CaptureError naming the file and
+    the byte offset of the block. A capture that ends inside a block (its
+    writer was killed) ends the iteration, with `partial_tail` bytes left
+    over. `comment` and `interfaces` fill in as their blocks are read;
+    `count` is the number of records read."""
 
+    def __init__(self, chunks: Iterable[bytes], name: str = "capture") -> None:
+        self.name = name
+        self.comment: dict = {}
+        self.interfaces: list[dict] = []
+        self.partial_tail = 0
+        self.count = 0
+        self._chunks = iter(chunks)
+        self._buf = b""
+        self._pos = 0        # the next unread byte in _buf
+        self._offset = 0     # file offset of _buf[0]
+        self._order = "<"
+        self._per_s: list[int] = []  # time stamp units per second, by interface id
 
-def parse_capture(data: bytes, path: str = "capture") -> Capture:
-    """`read_capture` over bytes already read."""
-    if not is_pcapng(data):
-        raise CaptureError(f"{path}: not a pcapng file (no Section Header Block)")
-    cap = Capture()
-    pos, e = 0, "<"
-    tsres: list[int] = []
-    while pos < len(data):
-        if pos + 12 > len(data):
-            cap.partial_tail = len(data) - pos
-            break
-        if data[pos:pos + 4] == SHB_MAGIC_BYTES:
-            magic = data[pos + 8:pos + 12]
-            e = "<" if magic == struct.pack("<I", BYTE_ORDER_MAGIC) else ">"
-            if magic not in (struct.pack("<I", BYTE_ORDER_MAGIC), struct.pack(">I", BYTE_ORDER_MAGIC)):
-                raise CaptureError(f"{path}: bad byte-order magic at offset {pos}")
-        btype, total = struct.unpack_from(e + "II", data, pos)
-        if total < 12 or total % 4:
-            raise CaptureError(f"{path}: bad block length {total} at offset {pos}")
-        if pos + total > len(data):
-            cap.partial_tail = len(data) - pos
-            break
-        body = data[pos + 8:pos + total - 4]
+    def _fill(self, n: int) -> bool:
+        """At least n unread bytes in the buffer; False when the input ends first."""
+        have = len(self._buf) - self._pos
+        if have >= n:
+            return True
+        parts = [self._buf[self._pos:]]
+        while have < n:
+            chunk = next(self._chunks, None)
+            if chunk is None:
+                break
+            parts.append(chunk)
+            have += len(chunk)
+        self._offset += self._pos
+        self._buf, self._pos = b"".join(parts), 0
+        return have >= n
+
+    def _error(self, offset: int, what: str) -> CaptureError:
+        return CaptureError(f"{self.name}: damaged capture at offset {offset}: {what}")
+
+    def __iter__(self) -> Iterator[Record]:
+        while True:
+            offset = self._offset + self._pos
+            if not self._fill(12):
+                self.partial_tail = len(self._buf) - self._pos
+                if offset == 0 and not is_pcapng(self._buf):
+                    raise CaptureError(f"{self.name}: not a pcapng file (no Section Header Block)")
+                return
+            btype, total = self._header(offset)
+            if not self._fill(total):
+                self.partial_tail = len(self._buf) - self._pos
+                return
+            block = self._buf[self._pos:self._pos + total]
+            self._pos += total
+            trailer = struct.unpack_from(self._order + "I", block, total - 4)[0]
+            if trailer != total:
+                raise self._error(offset, f"block length {total} does not match its trailing copy {trailer}")
+            record = self._block(btype, block[8:-4], offset)
+            if record is not None:
+                self.count += 1
+                yield record
+
+    def _header(self, offset: int) -> tuple[int, int]:
+        head = self._buf[self._pos:self._pos + 12]
+        if head[:4] == SHB_MAGIC_BYTES:
+            magic = head[8:12]
+            if magic == struct.pack("<I", BYTE_ORDER_MAGIC):
+                self._order = "<"
+            elif magic == struct.pack(">I", BYTE_ORDER_MAGIC):
+                self._order = ">"
+            else:
+                raise self._error(offset, "bad byte-order magic")
+        elif offset == 0:
+            raise CaptureError(f"{self.name}: not a pcapng file (no Section Header Block)")
+        btype, total = struct.unpack_from(self._order + "II", head)
+        if btype not in MIN_BLOCK_LENGTH and btype not in SKIPPED_BLOCK_TYPES and not btype & 0x80000000:
+            raise self._error(offset, f"unknown block type 0x{btype:08x}")
+        if total % 4 or not MIN_BLOCK_LENGTH.get(btype, 12) <= total <= MAX_BLOCK_LENGTH:
+            raise self._error(offset, f"bad block length {total} for block type 0x{btype:08x}")
+        return btype, total
+
+    def _block(self, btype: int, body: bytes, offset: int) -> Record | None:
+        e = self._order
         if btype == SHB_TYPE:
+            self.interfaces, self._per_s = [], []  # interface ids count from 0 in each section
             opts = _parse_options(body[16:], e)
             if 1 in opts:
                 try:
-                    cap.comment = json.loads(opts[1].decode())
+                    self.comment = json.loads(opts[1].decode())
                 except (ValueError, UnicodeDecodeError):
-                    cap.comment = {"text": opts[1].decode("utf-8", "replace")}
+                    self.comment = {"text": opts[1].decode("utf-8", "replace")}
         elif btype == IDB_TYPE:
             linktype = struct.unpack_from(e + "H", body, 0)[0]
             opts = _parse_options(body[8:], e)
-            res = opts.get(9, bytes([6]))[0]
-            tsres.append(10 ** (res & 0x7F) if not res & 0x80 else 2 ** (res & 0x7F))
-            cap.interfaces.append({"linktype": linktype, "name": opts.get(2, b"").decode("utf-8", "replace")})
+            res = (opts.get(9) or bytes([6]))[0]  # microseconds unless said otherwise
+            self._per_s.append(10 ** (res & 0x7F) if not res & 0x80 else 2 ** (res & 0x7F))
+            self.interfaces.append({"linktype": linktype, "name": opts.get(2, b"").decode("utf-8", "replace")})
         elif btype == EPB_TYPE:
-            iface, hi, lo, caplen, _orig = struct.unpack_from(e + "IIIII", body, 0)
-            payload = body[20:20 + caplen]
-            units = hi << 32 | lo
-            per_s = tsres[iface] if iface < len(tsres) else 1_000_000
-            ts_ns = units * 1_000_000_000 // per_s
-            opts = _parse_options(body[20 + caplen + (-caplen) % 4:], e)
-            direction = iface
-            if 2 in opts and len(opts[2]) == 4:
-                flags = struct.unpack(e + "I", opts[2])[0] & 3
-                direction = {1: RX, 2: TX}.get(flags, iface)
-            cap.records.append(Record(ts_ns, direction, payload))
-        pos += total
-    return cap
+            return self._packet(body, offset)
+        return None
+
+    def _packet(self, body: bytes, offset: int) -> Record:
+        e = self._order
+        iface, hi, lo, caplen, _orig = struct.unpack_from(e + "IIIII", body, 0)
+        if iface >= len(self._per_s):
+            raise self._error(offset, f"packet of interface {iface}, but the section describes {len(self._per_s)}")
+        if 20 + caplen > len(body):
+            raise self._error(offset, f"packet of {caplen} bytes in a block of {len(body) + 12}")
+        ts_ns = (hi << 32 | lo) * 1_000_000_000 // self._per_s[iface]
+        opts = _parse_options(body[20 + caplen + (-caplen) % 4:], e)
+        direction = iface
+        if 2 in opts and len(opts[2]) == 4:
+            flags = struct.unpack(e + "I", opts[2])[0] & 3
+            direction = {1: RX, 2: TX}.get(flags, iface)
+        return Record(ts_ns, direction, body[20:20 + caplen])
+
+
+@contextmanager
+def open_capture(path: str | Path) -> Iterator[CaptureReader]:
+    """A CaptureReader over a file (OSError when it cannot be opened)."""
+    with open(path, "rb") as fh:
+        yield CaptureReader(iter(partial(fh.read, READ_SIZE), b""), str(path))
+
+
+def read_capture(path: str | Path) -> Capture:
+    """Every complete block of a capture this module wrote (any single-section
+    pcapng with EPBs on byte-stream interfaces reads the same way), in memory."""
+    with open_capture(path) as reader:
+        records = list(reader)
+    return Capture(reader.comment, records, reader.partial_tail, reader.interfaces)
 
 
 def default_capture_path(root: str | Path = "captures") -> Path:

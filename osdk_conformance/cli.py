@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from typing import Callable, Sequence
+from typing import Callable, NoReturn, Sequence
 
 from .errors import UsageError
 
@@ -65,8 +65,22 @@ def _soak(args: argparse.Namespace) -> int:
     return run_soak(args)
 
 
+class Parser(argparse.ArgumentParser):
+    """Reports a bad command line in one line, like every other usage error
+    (subcommand parsers are of the same class)."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def _add_seed_argument(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--seed", metavar="FILE",
+                   help="the seed text spec/trace.yaml maps (not in the repository; default: $OSDK_SEED). "
+                        "Without one, the trace's checks against the seed are skipped, and the output says so")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    ap = argparse.ArgumentParser(
+    ap = Parser(
         prog="osdkc",
         description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.",
     )
@@ -78,6 +92,8 @@ def build_parser() -> argparse.ArgumentParser:
     src = d.add_mutually_exclusive_group(required=True)
     src.add_argument("--hex", help="the bytes as hex (spaces and colons allowed)")
     src.add_argument("file", nargs="?", help="a file of raw bytes or a pcapng capture (osdkc device), or - for standard input")
+    d.add_argument("--direction", choices=("rx", "tx", "both"), default="rx",
+                   help="of a capture: bytes received (default), sent, or both, each event marked with its direction")
     d.add_argument("--pretty", action="store_true", help="indent each JSON object")
     d.set_defaults(func=_decode)
 
@@ -86,11 +102,14 @@ def build_parser() -> argparse.ArgumentParser:
     ssub.required = True
     t = ssub.add_parser("trace", help="map every seed entry to the spec element that carries it")
     t.add_argument("--json", action="store_true", help="print the table as JSON")
+    _add_seed_argument(t)
     t.set_defaults(func=_spec_trace)
     c = ssub.add_parser("check", help="compile the .ksy files, validate rules and trace, check generated/")
+    _add_seed_argument(c)
     c.set_defaults(func=_spec_check)
 
     k = sub.add_parser("kit", help="run the conformance kit (spec checks and worked examples)")
+    _add_seed_argument(k)
     k.set_defaults(func=_kit)
 
     from .runner import add_arguments as add_run_arguments
@@ -129,6 +148,15 @@ def build_parser() -> argparse.ArgumentParser:
     sk = sub.add_parser("soak", help="benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost")
     soak.add_arguments(sk, PROFILES)
     sk.set_defaults(func=_soak)
+    from . import sdk_host  # standard library and osdk_conformance only until it runs
+
+    sd = sub.add_parser("sdk", help="DJI's Onboard-SDK itself against the kit (needs a checkout of it)")
+    sdsub = sd.add_subparsers(dest="sdk_command", metavar="SDK_COMMAND")
+    sdsub.required = True
+    ht = sdsub.add_parser("host-test", help="build DJI's host stack with our driver, run a whole session "
+                                            "against osdkc sim for each profile")
+    sdk_host.add_arguments(ht, PROFILES)
+    ht.set_defaults(func=sdk_host.run_host_test)
     from . import bench  # no third-party import until it runs
 
     bn = sub.add_parser("bench", help="benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak")
@@ -139,7 +167,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     ap = build_parser()
-    args = ap.parse_args(argv)
+    try:
+        args = ap.parse_args(argv)
+    except SystemExit as e:  # --help, or a bad command line already reported
+        return e.code if isinstance(e.code, int) else 2
     func: Callable[[argparse.Namespace], int] = args.func
     try:
         return func(args)

@@ -15,3 +15,10 @@ COMMANDS = {
 
 def command_name(cmd_set: int, cmd_id: int) -> str:
     return COMMANDS.get((cmd_set, cmd_id), "unknown")
+
+
+def ack_code_text(code: int) -> str:
+    """An ACK code as messages show it: "0xFF01 not_activated". Construct's
+    Enum gives the spec's name as a str subclass of the number; a code the
+    spec does not name for that command arrives as an int and shows as hex only."""
+    return f"0x{int(code):04X} {code}" if isinstance(code, str) else f"0x{int(code):04X}"

@@ -3,13 +3,15 @@
 Deframing follows the SDK receiver (deframe.py); each intact frame is then
 decoded with the Construct spec for the chosen profile and printed in the
 JSON value model (docs/VALUE-MODEL.md). ACK values are decoded when the
-same stream carried the command they answer (matched by SEQ and session).
+same stream, or with --direction both the capture's sent bytes, carried the
+command they answer (matched by SEQ and session).
 """
 from __future__ import annotations
 
 import argparse
 import re
 import sys
+from itertools import chain
 from typing import IO, Any, Iterable, Iterator
 
 import construct
@@ -17,7 +19,7 @@ import construct
 from . import model
 from .commands import command_name
 from .errors import UsageError
-from .deframe import Frame, Garbage, Rejected, deframe, header_fields
+from .deframe import Deframer, Frame, Garbage, Rejected, deframe, header_fields
 
 READ_SIZE = 64 * 1024
 
@@ -138,24 +140,39 @@ def read_chunks(stream: IO[bytes]) -> Iterator[bytes]:
         yield chunk
 
 
-def received_bytes(chunks: Iterable[bytes]) -> Iterator[bytes]:
-    """The chunks as they are, or, when they form a pcapng capture (osdkc
-    device --capture; detected by the Section Header Block magic), the bytes
-    received from the flight controller in capture order."""
-    from .capture import CaptureError, is_pcapng, parse_capture
+def capture_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozenset({"rx"}),
+                   name: str = "capture") -> Iterator[tuple[str, bytes]]:
+    """(direction, bytes) in input order: the chunks as they are, all "rx",
+    or, when they form a pcapng capture (osdkc device --capture; detected by
+    the Section Header Block magic), the records of the wanted directions,
+    read block by block. A capture that cannot be read is a UsageError naming
+    `name` and the byte offset; an incomplete last block (a killed writer)
+    is left out, as it is in `osdkc device --replay`."""
+    from .capture import NAMES, CaptureError, CaptureReader, is_pcapng
 
     it = iter(chunks)
     first = next(it, b"")
     if not is_pcapng(first):
+        if directions != {"rx"}:
+            raise UsageError(f"{name}: raw bytes hold only what was received; "
+                             "--direction tx or both needs a pcapng capture (osdkc device --capture)")
         if first:
-            yield first
-        yield from it
+            yield "rx", first
+        for chunk in it:
+            yield "rx", chunk
         return
+    reader = CaptureReader(chain([first], it), name)
     try:
-        cap = parse_capture(first + b"".join(it))
+        for rec in reader:
+            if NAMES[rec.direction] in directions:
+                yield NAMES[rec.direction], rec.data
     except CaptureError as e:
         raise UsageError(str(e)) from None
-    yield from cap.received()
+
+
+def received_bytes(chunks: Iterable[bytes], name: str = "capture") -> Iterator[bytes]:
+    """The bytes received from the flight controller: the chunks, or a capture's rx records."""
+    return (data for _, data in capture_pieces(chunks, frozenset({"rx"}), name))
 
 
 def decode_events(chunks: Iterable[bytes], profile: str, models: bool = True) -> Iterator[dict]:
@@ -164,7 +181,31 @@ def decode_events(chunks: Iterable[bytes], profile: str, models: bool = True) ->
         yield decoder.event(ev)
 
 
+def both_directions_events(chunks: Iterable[bytes], profile: str, name: str) -> Iterator[dict]:
+    """The events of both directions of a capture, each marked with its
+    direction, in capture order. Each direction is deframed on its own (its
+    offsets count its own bytes); one decoder sees both, so an ACK the flight
+    controller sent is matched with the command the host sent."""
+    decoder = Decoder(profile)
+    deframers = {"rx": Deframer(), "tx": Deframer()}
+    for direction, data in capture_pieces(chunks, frozenset(deframers), name):
+        for ev in deframers[direction].feed(data):
+            yield {"direction": direction, **decoder.event(ev)}
+    for direction, d in deframers.items():
+        for ev in d.finish():
+            yield {"direction": direction, **decoder.event(ev)}
+
+
+def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input") -> Iterator[dict]:
+    """What `osdkc decode` prints for --direction rx, tx or both."""
+    if direction == "both":
+        return both_directions_events(chunks, profile, name)
+    pieces = capture_pieces(chunks, frozenset({direction}), name)
+    return decode_events((data for _, data in pieces), profile)
+
+
 def run_decode(args: argparse.Namespace) -> int:
+    name = args.file if args.file not in (None, "-") else "--hex" if args.hex is not None else "standard input"
     if args.hex is not None:
         source: Iterable[bytes] = [parse_hex(args.hex)]
         close = None
@@ -181,7 +222,7 @@ def run_decode(args: argparse.Namespace) -> int:
     errors = 0
     indent = 2 if args.pretty else None
     try:
-        for ev in decode_events(received_bytes(source), args.profile):
+        for ev in stream_events(source, args.profile, args.direction, name):
             if ev["kind"] == "error":
                 errors += 1
             sys.stdout.write(model.dumps(ev, indent=indent) + "\n")

@@ -11,11 +11,13 @@ recorded in a pcapng capture (capture.py) that `--replay` checks offline.
 Each check is a named Result (category = check group, id = check name), so
 the reports are those of `osdkc run`. docs/ACCEPTANCE.md lists every check.
 
-Exit status: 0 every check passed, 1 a check failed, 2 usage or port error.
+Exit status: EXIT_STATUS below (also the --help epilog and docs/ACCEPTANCE.md).
+An active run always ends through ActiveRun.clean_up (device_active.py).
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import os
 import sys
@@ -27,6 +29,10 @@ from typing import Any
 
 from .errors import UsageError
 from .report import ERROR, FAIL, PASS, SKIP, Result
+
+EXIT_STATUS = ("exit status: 0 every check passed, 1 a check failed or errored, 2 usage or port error, "
+               "130 interrupted by SIGINT, 143 by SIGTERM (an interrupted run releases control, restores the "
+               "rates it changed and still writes its reports; a second SIGINT cuts that clean-up short)")
 
 MOTION_WARNING = """\
 !!! WARNING: --allow-motion sends MOVEMENT CONTROL commands. On a real flight
@@ -220,6 +226,8 @@ def stream_checks(an, opts: Options, epoch: int = 0) -> list[Result]:
 
 
 def rate_check(an, opts: Options, rates: dict, t0: float, t1: float, cid: str, cat: str) -> Result:
+    if an.first_t is None:  # the window never started; link.stall reports the silence
+        return Result(cat, cid, SKIP, "no byte received: no rate to measure")
     m = an.measure_rates(rates, t0, t1)
     bad, unmeasured = [], []
     for item, r in m.items():
@@ -379,27 +387,37 @@ class Port:
     """The serial port, a reader thread that feeds the analyzer and the
     capture, reopening after the device goes away, and a writer."""
 
-    def __init__(self, url: str, baud: int, analyzer, capture) -> None:
+    def __init__(self, url: str, baud: int, analyzer, capture=None) -> None:
         self.url, self.baud, self.an, self.cap = url, baud, analyzer, capture
         self.state = LinkState()
         self.ser = None
         self.stop = threading.Event()
         self.wlock = threading.Lock()
         self.thread: threading.Thread | None = None
+        # a section no signal exception may interrupt (Interrupts.critical in a live run)
+        self.critical = contextlib.nullcontext
 
     def _open(self):
         import serial
 
         return serial.serial_for_url(self.url, baudrate=self.baud, timeout=0.05, write_timeout=1.0)
 
-    def open(self) -> None:
+    def open(self, start: bool = True) -> None:
+        """Open the port and (unless `start` is False) start reading."""
         try:
             self.ser = self._open()
         except Exception as e:  # SerialException, ValueError (bad URL), OSError
             raise UsageError(f"cannot open port {self.url}: {_one_line(e)}") from None
-        self.state.t_open = time.time()
-        self.thread = threading.Thread(target=self._reader, name="osdkc-reader", daemon=True)
-        self.thread.start()
+        if start:
+            self.start(self.cap)
+
+    def start(self, capture) -> None:
+        """Attach the capture, then start reading: the capture holds every byte the analyzer counts."""
+        with self.critical():   # a signal here leaves either no reader or a started one
+            self.cap = capture
+            self.state.t_open = time.time()
+            self.thread = threading.Thread(target=self._reader, name="osdkc-reader", daemon=True)
+            self.thread.start()
 
     def _reader(self) -> None:
         while not self.stop.is_set():
@@ -432,21 +450,25 @@ class Port:
                 self.an.feed_rx(ts / 1e9, data)
 
     def write(self, data: bytes) -> None:
-        with self.wlock:
+        """Record and register the bytes, then send them. In that order: an ACK
+        that comes back at once finds its command (else it is dropped and the
+        command sent again), and the capture keeps the order the device saw.
+        Bytes a failing write may have sent in part stay recorded."""
+        with self.critical(), self.wlock:
             if self.ser is None:
                 raise PortDown("the port is down")
             ts = time.time_ns()
+            if self.cap:
+                self.cap.tx(data, ts)
+            self.an.feed_tx(ts / 1e9, data)
             try:
                 self.ser.write(data)
             except Exception as e:
                 raise PortDown(_one_line(e)) from None
-        if self.cap:
-            self.cap.tx(data, ts)
-        self.an.feed_tx(ts / 1e9, data)
 
     def close(self) -> None:
         self.stop.set()
-        if self.thread:
+        if self.thread and self.thread.ident is not None:
             self.thread.join(2.0)
         self.state.t_end = time.time()
         with self.wlock:
@@ -462,327 +484,41 @@ def _one_line(e: Exception) -> str:
 
 
 # --------------------------------------------------------------------------
-# Active checks
-
-
-class Commander:
-    """Sends commands (session 2, ACK required, up to 3 tries) and waits for ACKs."""
-
-    def __init__(self, port: Port, an, profile: str, key: bytes | None, encrypt: bool,
-                 ack_timeout: float = 1.0) -> None:
-        from osdk_construct.payload import osdk_payload
-
-        self.port, self.an, self.profile = port, an, profile
-        self.key = key if encrypt else None
-        self.payload = osdk_payload
-        self.seq = 1
-        self.ack_timeout = ack_timeout
-
-    def _next_seq(self) -> int:
-        self.seq = (self.seq + 1) & 0xFFFF
-        return self.seq
-
-    def send_value(self, cmd_set: int, cmd_id: int, value: bytes, session: int = 0) -> bytes:
-        """Send a command whose value is already encoded; no ACK is awaited."""
-        from .device_wire import encode
-
-        seq = self._next_seq()
-        frame = encode(cmd_set=cmd_set, cmd_id=cmd_id, value=value, session=session, seq=seq, key=self.key)
-        self.port.write(frame)
-        return frame
-
-    def request(self, cmd_set: int, cmd_id: int, body: dict, tries: int = 3):
-        """(ACK value parsed, seconds) or (None, why)."""
-        from .device_wire import encode
-
-        value = self.payload(cmd_set, cmd_id, False, self.profile).build({"body": body})
-        seq = self._next_seq()
-        frame = encode(cmd_set=cmd_set, cmd_id=cmd_id, value=value, session=2, seq=seq, key=self.key)
-        t0 = time.monotonic()
-        for _ in range(tries):
-            try:
-                self.port.write(frame)
-            except PortDown as e:
-                return None, f"port down: {e}"
-            ack = self.an.wait_ack(2, seq, self.ack_timeout)
-            if ack:
-                try:
-                    parsed = self.payload(cmd_set, cmd_id, True, self.profile).parse(ack[3]).body
-                except Exception as e:
-                    return None, f"ACK does not decode: {_one_line(e)} (value {ack[3].hex()})"
-                return parsed, time.monotonic() - t0
-        return None, f"no ACK after {tries} tries of {self.ack_timeout}s"
-
-
-def _code(v) -> tuple[int, str]:
-    return int(v), str(v)
-
-
-def active_checks(cmd: Commander, an, opts: Options, app_id: int | None, allow_motion: bool,
-                  window: float = 2.0, motion_seconds: float = 1.5) -> list[Result]:
-    prof = an.prof
-    out: list[Result] = []
-
-    def res(cid, status, msg, details=None, kind=""):
-        out.append(Result("active", cid, status, msg, details or {}, kind=kind))
-
-    # version
-    ack, info = cmd.request(0, 0, {"arbitrary": 0})
-    if ack is None:
-        res("active.version", FAIL, f"version query: {info}", kind="no_ack")
-    else:
-        name = bytes(ack.version_name).rstrip(b"\0")
-        code = _code(ack.ack_code)
-        printable = all(32 <= b < 127 for b in name) and name
-        details = {"ack_code": f"{code[0]:#06x} {code[1]}", "version_crc": f"{ack.version_crc:#010x}",
-                   "version_name": name.decode("ascii", "replace"), "ack after s": round(info, 3)}
-        if code[0] not in (0x0000, 0xFF01) or not printable:
-            res("active.version", FAIL, "version ACK: unknown code or unprintable version name", details, "bad_ack")
-        else:
-            res("active.version", PASS, f"version {name.decode()} ({code[1]})", details)
-    # activation
-    if app_id is None:
-        res("active.activation", SKIP, "no --app-id given: activation not tried")
-        activated = ack is not None and int(ack.ack_code) == 0
-    else:
-        ack, info = cmd.request(0, 1, {"app_id": app_id, "api_level": 2, "sdk_version": prof.sdk_version,
-                                       "bundle_id": bytes(32)})
-        activated = False
-        if ack is None:
-            res("active.activation", FAIL, f"activation: {info}", kind="no_ack")
-        else:
-            code = _code(ack.ack_code)
-            if code[0] != 0:
-                res("active.activation", FAIL, f"activation refused: {code[0]} {code[1]}", kind="refused")
-            else:
-                v, _ = cmd.request(0, 0, {"arbitrary": 0})
-                if v is None or int(v.ack_code) != 0:
-                    res("active.activation", FAIL, "activation succeeded but the version query still says "
-                        "not activated", kind="not_activated")
-                else:
-                    activated = True
-                    res("active.activation", PASS, f"activated app id {app_id}; version query now says activated")
-    # frequency
-    pattern = {item: 0 for item in prof.flag_bits}
-    pattern.update({"time_stamp": 50, "quaternion": 50, "velocity": 10, "position": 10, "flight_status": 10,
-                    "battery": 10, "control_info": 10})
-    from .device_analysis import CODE_OF_HZ
-    codes = [CODE_OF_HZ[pattern[i]] for i in prof.flag_bits] + [0] * (16 - len(prof.flag_bits))
-    n_epochs = len(an.epochs)
-    ack, info = cmd.request(0, 0x10, {"codes": codes})
-    freq_ok = False
-    if ack is None:
-        res("active.frequency", FAIL, f"set frequency: {info}", kind="no_ack")
-    elif int(ack.ack_code) != 0:
-        res("active.frequency", FAIL, f"set frequency refused: {_code(ack.ack_code)}", kind="refused")
-    else:
-        time.sleep(opts.settle + window)
-        with an.lock:
-            ep = an.epochs[n_epochs] if len(an.epochs) > n_epochs else None
-            if ep is None:
-                res("active.frequency", ERROR, "the ACK was not seen by the analyzer")
-            else:
-                t0 = ep.start + opts.settle
-                r = rate_check(an, opts, ep.rates, t0, t0 + window, "active.frequency", "active")
-                fl = flags_check(an, ep.rates, t0, t0 + window, "active.frequency", "active")
-                if r.status == PASS and fl.status == PASS:
-                    freq_ok = True
-                    res("active.frequency", PASS, "rates and flag words follow the new frequencies: " + r.message,
-                        r.details)
-                else:
-                    bad = [x.message for x in (r, fl) if x.status != PASS]
-                    res("active.frequency", FAIL, "; ".join(bad), {**r.details, **fl.details}, "rate")
-    # control authority
-    def control_device(want: int, timeout=1.0):
-        """Control devices the broadcast showed, until `want` shows up or the time is over."""
-        seen = []
-        end = time.monotonic() + timeout
-        while time.monotonic() < end:
-            time.sleep(0.1)
-            with an.lock:
-                ci = an.latest.get("control_info")
-            if ci and ci[0] > time.time() - 0.3:
-                seen.append(int(ci[1].control_device))
-                if seen[-1] == want:
-                    break
-        return seen
-
-    def two_step(request: int, cid: str, progress: int, done: int, device_after: int):
-        acks = []
-        for _ in range(2):
-            a, info = cmd.request(1, 0, {"request": request})
-            if a is None:
-                res(cid, FAIL, f"{'obtain' if request else 'release'} control: {info}", {"acks": acks}, "no_ack")
-                return False
-            acks.append(f"{int(a.ack_code)} {a.ack_code}")
-            code = int(a.ack_code)
-            if code == done:
-                break
-            if code != progress:
-                why = {0: "the RC mode switch is not in F mode", 0xC9: "the flight controller is in IOC mode",
-                       0xFF01: "the app is not activated"}.get(code, "unexpected answer")
-                res(cid, FAIL, f"{'obtain' if request else 'release'} control answered {code} ({a.ack_code}): {why}",
-                    {"acks": acks}, "refused")
-                return False
-        if int(a.ack_code) != done:
-            res(cid, FAIL, f"still not done after two requests: {acks}", {"acks": acks}, "refused")
-            return False
-        if acks[0].split()[0] != str(progress):
-            note = " (answered done at once, no 'in progress' step)"
-        else:
-            note = ""
-        seen = control_device(device_after) if freq_ok else []
-        details = {"acks": acks, "control device in broadcast": seen[-3:]}
-        if freq_ok and seen and seen[-1] != device_after:
-            res(cid, FAIL, f"ACKs {acks} but the broadcast control device is {seen[-1]}, not {device_after}",
-                details, "state")
-            return False
-        res(cid, PASS, f"ACKs {' then '.join(acks)}{note}", details)
-        return True
-
-    obtained = two_step(1, "active.control_obtain", 3, 2, 2)
-    if not allow_motion:
-        res("active.movement", SKIP, "movement control not tried (needs --allow-motion)")
-    elif not obtained:
-        res("active.movement", SKIP, "control authority not obtained: movement control not tried")
-    else:
-        movement_check(cmd, an, opts, res, motion_seconds)
-    two_step(0, "active.control_release", 4, 1, 0)
-    # restore the profile's default rates
-    defaults = [CODE_OF_HZ.get(prof.default_rates_hz[i], 5) for i in prof.flag_bits] + [0] * (16 - len(prof.flag_bits))
-    ack, info = cmd.request(0, 0x10, {"codes": defaults})
-    if ack is None or int(ack.ack_code) != 0:
-        res("active.frequency_restore", FAIL, f"restoring the default rates failed: {info if ack is None else ack.ack_code}",
-            kind="no_ack" if ack is None else "refused")
-    else:
-        res("active.frequency_restore", PASS, "default rates restored")
-    return out
-
-
-def movement_check(cmd: Commander, an, opts: Options, res, seconds: float = 1.5) -> None:
-    """Attitude, then velocity and yaw rate, then position offset and height,
-    each commanded at 50 Hz for `seconds` (position: 5/3 of it), then hover."""
-    from osdk_construct.control import encode_movement_control
-
-    def state():
-        with an.lock:
-            return dict(an.latest)
-
-    def stream(mode: int, seconds: float, values):
-        end = time.monotonic() + seconds
-        while time.monotonic() < end:
-            x, y, z, yaw = values() if callable(values) else values
-            try:
-                cmd.send_value(1, 3, encode_movement_control(mode, x, y, z, yaw), session=0)
-            except PortDown:
-                return False
-            time.sleep(0.02)
-        return True
-
-    def window(key: str, seconds: float):
-        t_end = time.time()
-        with an.lock:
-            return [s for s in an.traces[key] if s[0] >= t_end - seconds]
-
-    problems, details = [], {}
-    s = state()
-    for need in ("attitude", "velocity", "position"):
-        if need not in s:
-            res("active.movement", SKIP, f"cannot verify movement: the {need} item is not broadcast")
-            return
-    yaw0 = s["attitude"][1][2]
-    # 1. attitude: tilt angles and yaw angle
-    roll_t, pitch_t, yaw_t = 5.0, -3.0, (yaw0 + 20.0 + 180) % 360 - 180
-    stream(0x00, seconds, (roll_t, pitch_t, 0.0, yaw_t))
-    att = window("attitude", 0.4)
-    if att:
-        r = sum(a[1] for a in att) / len(att)
-        p = sum(a[2] for a in att) / len(att)
-        y = math.degrees(math.atan2(sum(math.sin(math.radians(a[3])) for a in att),
-                                    sum(math.cos(math.radians(a[3])) for a in att)))
-        err = (abs(r - roll_t), abs(p - pitch_t), abs((y - yaw_t + 180) % 360 - 180))
-        details["attitude command (roll, pitch, yaw deg)"] = [roll_t, pitch_t, round(yaw_t, 2)]
-        details["attitude reached"] = [round(r, 2), round(p, 2), round(y, 2)]
-        if max(err) > 0.5:
-            problems.append(f"attitude off by {max(err):.2f} deg (accuracy 0.5 deg)")
-    else:
-        problems.append("no attitude sample during the attitude command")
-    # 2. velocity and yaw rate
-    vel_t, yaw_rate_t = (1.0, -0.5, 0.3), 10.0
-    stream(0x48, seconds, (*vel_t, yaw_rate_t))
-    vel, att = window("velocity", 0.4), window("attitude", min(1.0, seconds / 2))
-    if vel and len(att) > 2:
-        v = [sum(s[i] for s in vel) / len(vel) for i in (1, 2, 3)]
-        dyaw = (att[-1][3] - att[0][3] + 180) % 360 - 180
-        rate = dyaw / (att[-1][0] - att[0][0])
-        details["velocity command (x, y, z m/s; yaw rate deg/s)"] = [*vel_t, yaw_rate_t]
-        details["velocity reached"] = [round(x, 3) for x in v] + [round(rate, 2)]
-        if max(abs(a - b) for a, b in zip(v, vel_t)) > 0.2:
-            problems.append(f"velocity off by {max(abs(a - b) for a, b in zip(v, vel_t)):.2f} m/s (accuracy 0.2 m/s)")
-        if abs(rate - yaw_rate_t) > 0.5:
-            problems.append(f"yaw rate {rate:.2f} deg/s for {yaw_rate_t} (limit 0.5 deg/s)")
-    else:
-        problems.append("no velocity/attitude samples during the velocity command")
-    # 3. position offset and height, closed loop on the broadcast position
-    lat0, lon0, _alt0, h0 = state()["position"][1]
-    goal = (2.0, 1.0, h0 + 1.0)
-
-    def where():
-        lat, lon, _alt, h = state()["position"][1]
-        return (lat - lat0) * 6378137.0, (lon - lon0) * 6378137.0 * math.cos(lat0), h
-
-    def offsets():
-        n, e, _h = where()
-        return goal[0] - n, goal[1] - e, goal[2], yaw_t
-
-    stream(0x90, seconds * 5 / 3, offsets)
-    n, e, h = where()
-    details["position goal (north, east m; height m)"] = [goal[0], goal[1], round(goal[2], 2)]
-    details["position reached"] = [round(n, 3), round(e, 3), round(h, 3)]
-    if math.hypot(n - goal[0], e - goal[1]) > 0.5 or abs(h - goal[2]) > 0.5:
-        problems.append(f"position {math.hypot(n - goal[0], e - goal[1]):.2f} m, height {abs(h - goal[2]):.2f} m "
-                        "from the goal (limit 0.5 m)")
-    stream(0x48, 0.5, (0.0, 0.0, 0.0, 0.0))   # stop and hover
-    if problems:
-        res("active.movement", FAIL, "the state does not follow the commands: " + "; ".join(problems), details,
-            "motion")
-    else:
-        res("active.movement", PASS, "attitude, velocity, yaw rate and position follow the commands", details)
-
-
-# --------------------------------------------------------------------------
 # Command line
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    from .options import baud_rate, non_negative_float, fraction, positive_float, uint32
+
     src = ap.add_mutually_exclusive_group(required=True)
     src.add_argument("--port", metavar="URL", help="serial port: /dev/ttyUSB0, a pty path, socket://HOST:PORT, rfc2217://...")
     src.add_argument("--replay", metavar="FILE", help="run the passive checks on a pcapng capture instead")
-    ap.add_argument("--baud", type=int, default=230400, help="baud rate (default 230400)")
+    ap.add_argument("--baud", type=baud_rate, default=230400, help="baud rate (default 230400)")
     ap.add_argument("--profile", required=True, choices=profiles, help="broadcast wire profile of the flight controller")
-    ap.add_argument("--duration", type=float, default=10.0, metavar="S", help="seconds of passive listening (default 10)")
+    ap.add_argument("--duration", type=positive_float, default=10.0, metavar="S", help="seconds of passive listening (default 10)")
     ap.add_argument("--active", action="store_true", help="also send commands: version, activation, frequency, control")
     ap.add_argument("--allow-motion", action="store_true", help="with --active: send movement control (MOVES THE AIRCRAFT)")
-    ap.add_argument("--app-id", type=int, help="app id for activation (with --active)")
+    ap.add_argument("--app-id", type=uint32, help="app id for activation (with --active)")
     ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
     ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt the commands sent (needs --key-env)")
     ap.add_argument("--capture", metavar="FILE", help="pcapng capture file (default captures/device-<time>-<pid>.pcapng)")
     ap.add_argument("--no-capture", action="store_true", help="do not record a capture")
     ap.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
     ap.add_argument("--html", metavar="FILE", help="write a self-contained HTML report with plots")
-    ap.add_argument("--rate-tolerance", type=float, default=0.10, metavar="FRAC", help="allowed rate error (default 0.10)")
-    ap.add_argument("--max-link-errors", type=float, default=0.001, metavar="FRAC",
+    ap.add_argument("--rate-tolerance", type=fraction, default=0.10, metavar="FRAC", help="allowed rate error (default 0.10)")
+    ap.add_argument("--max-link-errors", type=non_negative_float, default=0.001, metavar="FRAC",
                     help="allowed link incidents per frame, per kind (default 0.001)")
-    ap.add_argument("--max-jitter-ms", type=float, default=25.0, metavar="MS", help="allowed arrival spread (default 25)")
-    ap.add_argument("--stall-timeout", type=float, default=1.0, metavar="S", help="longest silence allowed (default 1)")
+    ap.add_argument("--max-jitter-ms", type=positive_float, default=25.0, metavar="MS", help="allowed arrival spread (default 25)")
+    ap.add_argument("--stall-timeout", type=positive_float, default=1.0, metavar="S", help="longest silence allowed (default 1)")
     ap.add_argument("--flight-status-enum", choices=("old", "new"), help="override the profile's flight status enum")
     ap.add_argument("--expect-rate", action="append", default=[], metavar="ITEM=HZ",
                     help="a rate the FC is configured for, when not the profile default (repeatable)")
-    ap.add_argument("--active-window", type=float, default=2.0, metavar="S",
+    ap.add_argument("--active-window", type=positive_float, default=2.0, metavar="S",
                     help="seconds to measure rates after setting frequencies (default 2)")
-    ap.add_argument("--motion-seconds", type=float, default=1.5, metavar="S",
+    ap.add_argument("--motion-seconds", type=positive_float, default=1.5, metavar="S",
                     help="seconds each movement command is held (default 1.5; position 5/3 of it)")
     ap.add_argument("-q", "--quiet", action="store_true", help="print only the summary and the failures")
+    ap.epilog = EXIT_STATUS
 
 
 def _options(args) -> Options:
@@ -836,79 +572,120 @@ def run_device(args: argparse.Namespace) -> int:
     key = key_option(args.key_env, args.encrypt)
     if args.allow_motion and not args.active:
         raise UsageError("--allow-motion needs --active")
-    if args.duration <= 0 or args.active_window <= 0 or args.motion_seconds <= 0:
-        raise UsageError("--duration, --active-window and --motion-seconds must be positive")
     an = Analyzer(args.profile, key, opts.expect_rates, opts.flight_status_enum)
     if args.replay:
         return _replay(args, an, opts)
 
-    from .capture import CaptureWriter, default_capture_path
+    from .device_active import Interrupts
 
     if args.allow_motion:
         print(MOTION_WARNING, file=sys.stderr, flush=True)
-    cap = None
-    port = Port(args.port, args.baud, an, None)
-    port.open()   # before the capture: a port that cannot be opened leaves no file behind
-    if not args.no_capture:
-        path = Path(args.capture) if args.capture else default_capture_path()
-        meta_c = {"tool": "osdkc device", "profile": args.profile, "port": args.port, "baud": args.baud,
-                  "started": time.strftime("%Y-%m-%dT%H:%M:%S%z")}
-        try:
-            cap = CaptureWriter(path, meta_c)
-        except OSError as e:
-            port.close()
-            raise UsageError(f"cannot write the capture {path}: {e.strerror or e}") from None
-        port.cap = cap
-        print(f"osdkc device: capturing to {path}", file=sys.stderr, flush=True)
-    results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
-    interrupted = False
+    port = Port(args.port, args.baud, an)
+    port.open(start=False)   # before the capture: a port that cannot be opened leaves no file behind
+    interrupts = Interrupts()
+    interrupts.install()
     try:
+        cap = _open_capture(args, port)
+        port.critical = interrupts.critical
+        return _live(args, opts, an, port, cap, key, interrupts)
+    finally:
+        interrupts.uninstall()
+
+
+def _open_capture(args, port: Port):
+    from .capture import CaptureWriter, default_capture_path
+
+    if args.no_capture:
+        return None
+    path = Path(args.capture) if args.capture else default_capture_path()
+    meta_c = {"tool": "osdkc device", "profile": args.profile, "port": args.port, "baud": args.baud,
+              "started": time.strftime("%Y-%m-%dT%H:%M:%S%z")}
+    try:
+        cap = CaptureWriter(path, meta_c)
+    except OSError as e:
+        port.close()
+        raise UsageError(f"cannot write the capture {path}: {e.strerror or e}") from None
+    return cap
+
+
+def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
+    """Listen, run the active checks (which clean up after themselves however
+    they end), then report every result measured, whatever ended the run."""
+    from .device_active import EXIT_BY_SIGNAL, ActiveRun, Commander, not_reached
+    from .report import conforms
+
+    results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
+    run: ActiveRun | None = None
+    error = ""
+    try:
+        if cap:
+            print(f"osdkc device: capturing to {cap.path}", file=sys.stderr, flush=True)
+        port.start(cap)
         end = time.monotonic() + args.duration
         while time.monotonic() < end:
             time.sleep(min(0.1, max(0.0, end - time.monotonic())))
-        active: list[Result] = []
-        if args.active:
-            if port.ser is None:
-                active.append(Result("active", "active.version", ERROR, "port down: active checks not run"))
-            else:
-                cmd = Commander(port, an, args.profile, key, args.encrypt)
-                active = active_checks(cmd, an, opts, args.app_id, args.allow_motion, args.active_window,
-                                       args.motion_seconds)
+        if args.active and port.ser is None:
+            results.append(Result("active", "active.version", ERROR, "port down: active checks not run"))
+        elif args.active:
+            run = ActiveRun(Commander(port, an, args.profile, key, args.encrypt), an, opts, args.app_id,
+                            args.allow_motion, args.active_window, args.motion_seconds, interrupts)
+            run.run()
     except KeyboardInterrupt:
-        interrupted = True
-        active = []
+        pass   # the signal is in interrupts.signals; ActiveRun has cleaned up
+    except Exception as e:   # a bug of ours: the clean-up ran, the results so far are still reported
+        error = f"{type(e).__name__}: {_one_line(e)}"
     finally:
+        interrupts.mode = "report"
         port.close()
         an.finish(port.state.t_end)
         if cap:
             cap.close()
     with an.lock:
         results += passive_results(an, opts, port.state)
-    results += active
-    if interrupted:
-        results.append(Result("run", "run.complete", ERROR, "interrupted by the user", kind="interrupted"))
+    signame = interrupts.first
+    phase = interrupts.first_phase if signame else run.phase if run else "passive"
+    if run:
+        results += run.results
+    if args.active and (signame or error):
+        why = f"interrupted by {signame}" if signame else "stopped by an error"
+        results += not_reached(results, f"the run was {why} during phase {phase}")
+    cleanup = (run.cleanup_cut if run and run.cleanup_cut else "complete") if run else "nothing to undo"
+    if signame:
+        results.append(Result("run", "run.complete", ERROR, f"interrupted by {signame} during phase {phase}; "
+                              f"clean-up: {cleanup}", {"signals": interrupts.signals, "phase": phase,
+                                                       "clean-up": cleanup}, kind="interrupted"))
+    elif error:
+        results.append(Result("run", "run.complete", ERROR, f"the run stopped on an internal error during phase "
+                              f"{phase}: {error}; clean-up: {cleanup}", {"phase": phase, "clean-up": cleanup},
+                              kind="exception"))
     meta = {"profile": args.profile, "port": args.port, "baud": args.baud, "duration s": args.duration,
-            "capture": str(cap.path) if cap else "none", "active": args.active}
+            "capture": str(cap.path) if cap else "none", "active": args.active,
+            "interrupted": f"{signame} during phase {phase}" if signame else "no", "clean-up": cleanup}
     print_results(results, args.quiet)
     write_reports(args, results, an, meta)
-    from .report import conforms
     ok = conforms(results)
+    if signame:
+        print(f"\nosdkc device: INTERRUPTED by {signame} during phase {phase}, clean-up {cleanup} "
+              f"({args.profile} on {args.port})")
+        return EXIT_BY_SIGNAL.get(signame, 130)
     print(f"\nosdkc device: {'PASS' if ok else 'FAIL'} ({args.profile} on {args.port})")
     return 0 if ok else 1
 
 
 def _replay(args, an, opts: Options) -> int:
-    from .capture import CaptureError, RX, read_capture
+    from .capture import CaptureError, RX, open_capture
 
     try:
-        capf = read_capture(args.replay)
-    except (OSError, CaptureError) as e:
-        raise UsageError(f"cannot read capture {args.replay}: {getattr(e, 'strerror', None) or e}") from None
-    for rec in capf.records:
-        (an.feed_rx if rec.direction == RX else an.feed_tx)(rec.t, rec.data)
+        with open_capture(args.replay) as capf:  # block by block: memory does not grow with the file
+            for rec in capf:
+                (an.feed_rx if rec.direction == RX else an.feed_tx)(rec.t, rec.data)
+    except OSError as e:
+        raise UsageError(f"cannot read capture {args.replay}: {e.strerror or e}") from None
+    except CaptureError as e:  # names the file and the offset of the damage
+        raise UsageError(str(e)) from None
     an.finish()
     results = passive_results(an, opts, None)
-    meta = {"profile": args.profile, "replay": args.replay, "records": len(capf.records),
+    meta = {"profile": args.profile, "replay": args.replay, "records": capf.count,
             "incomplete last block bytes": capf.partial_tail, **{f"capture {k}": v for k, v in capf.comment.items()}}
     if capf.partial_tail:
         print(f"osdkc device: {args.replay} ends in an incomplete block ({capf.partial_tail} bytes; "

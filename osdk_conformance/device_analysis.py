@@ -24,6 +24,7 @@ from .sim import quaternion_to_euler
 HZ_OF_CODE = {0: 0, 1: 1, 2: 10, 3: 50, 4: 100}
 CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
 MAX_EXAMPLES = 5
+CLOCK_AGREEMENT = 0.25   # a time stamp clock that runs off the host's by more is not trusted for rates
 
 
 @dataclass
@@ -31,6 +32,7 @@ class Epoch:
     start: float
     rates: dict[str, int]
     source: str
+    requested: float | None = None   # when the command setting these rates was first sent
 
 
 @dataclass
@@ -103,6 +105,10 @@ class Analyzer:
         self.bcast_raw_prev: bytes | None = None
         self.duplicates = 0
         self.item_times: dict[str, list[float]] = {i: [] for i in self.prof.flag_bits}
+        # the same frames on the flight controller's own clock (its time stamp item, s), None when not known
+        self.item_clock: dict[str, list[float | None]] = {i: [] for i in self.prof.flag_bits}
+        self._clock_ticks: int | None = None
+        self._clock_s = 0.0
         self.cmd_frames: dict[str, int] = {}
         # values
         fs = rules.flight_status_enum(profile, flight_status_enum)
@@ -143,7 +149,10 @@ class Analyzer:
                 if isinstance(ev, Frame):
                     op = open_frame(ev.raw, self.key)
                     if not op.is_ack and op.cmd_set is not None and op.session > 0:
-                        self.sent[(op.session, op.seq)] = (t, op.cmd_set, op.cmd_id, op.value)
+                        key, new = (op.session, op.seq), (t, op.cmd_set, op.cmd_id, op.value)
+                        old = self.sent.get(key)
+                        if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
+                            self.sent[key] = new
 
     def finish(self, t: float | None = None) -> None:
         with self.lock:
@@ -216,7 +225,7 @@ class Analyzer:
                 if sent:
                     self.acks[key] = (t, sent[1], sent[2], op.value)
                     if (sent[1], sent[2]) == (0x00, 0x10):
-                        self._frequency_acked(t, sent[3], op.value)
+                        self._frequency_acked(t, sent[3], op.value, sent[0])
                 self.ack_cond.notify_all()
             return
         name = {(2, 0): "broadcast", (2, 1): "lost_control"}.get((op.cmd_set, op.cmd_id), "other")
@@ -239,9 +248,12 @@ class Analyzer:
         if self.bcast_raw_prev == raw:
             self.duplicates += 1
         self.bcast_raw_prev = raw
+        ts = data.get("time_stamp")
+        clock = self._fc_clock(ts.time) if ts is not None else None
         for bit, item in enumerate(self.prof.flag_bits):
             if flags >> bit & 1:
                 self.item_times[item].append(t)
+                self.item_clock[item].append(clock)
         self._values(t, data)
         if self.on_broadcast:
             self.on_broadcast(t, data)
@@ -319,31 +331,57 @@ class Analyzer:
 
     # ---- configuration epochs ------------------------------------------------
 
-    def _frequency_acked(self, t: float, request: bytes, ack: bytes) -> None:
+    def _frequency_acked(self, t: float, request: bytes, ack: bytes, requested: float | None = None) -> None:
         if len(ack) < 2 or int.from_bytes(ack[:2], "little") != 0 or len(request) < 16:
             return
         rates = dict(self.epochs[-1].rates)
         for item, code in zip(self.prof.flag_bits, request):
             if code in HZ_OF_CODE:
                 rates[item] = HZ_OF_CODE[code]
-        self.epochs.append(Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}"))
+        self.epochs.append(Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}", requested))
 
     def epoch_end(self, i: int) -> float:
+        """Where epoch i's measurements stop: when the next configuration was
+        requested (the device may apply it before its ACK arrives, and a frame
+        at the new rates can come in the very read that brings the ACK)."""
         if i + 1 < len(self.epochs):
-            return self.epochs[i + 1].start
+            nxt = self.epochs[i + 1]
+            return nxt.start if nxt.requested is None else min(nxt.start, nxt.requested)
         return self.last_t or self.epochs[i].start
+
+    def _fc_clock(self, ticks: int) -> float | None:
+        """The flight controller's time stamp (1/400 s ticks, 32 bits) as
+        seconds that only go forward; None for a frame whose ticks went back."""
+        prev, self._clock_ticks = self._clock_ticks, ticks
+        if prev is not None:
+            step = (ticks - prev) % (1 << 32)
+            if step >= 1 << 31:
+                return None
+            self._clock_s += step / 400.0
+        return self._clock_s
 
     # ---- measurements --------------------------------------------------------
 
     def measure_rates(self, rates: dict[str, int], t0: float, t1: float) -> dict[str, dict]:
-        """Per item: expected Hz, frames carrying it in [t0, t1], measured Hz."""
+        """Per item: expected Hz, frames carrying it that arrived in [t0, t1],
+        measured Hz: (frames - 1) / the time from the first to the last, on
+        the flight controller's time stamp clock when every one of those
+        frames has it and its span agrees with the arrival span within
+        CLOCK_AGREEMENT (a host that was not scheduled for a moment reads a
+        burst of late frames: on the arrival clock the rate looks higher),
+        else on the arrival clock."""
         out = {}
         for item in self.prof.flag_bits:
-            times = [t for t in self.item_times[item] if t0 <= t <= t1]
-            n = len(times)
-            measured = (n - 1) / (times[-1] - times[0]) if n >= 3 and times[-1] > times[0] else None
+            pairs = [(t, c) for t, c in zip(self.item_times[item], self.item_clock[item]) if t0 <= t <= t1]
+            n, measured, clock = len(pairs), None, "arrival"
+            if n >= 3:
+                span = pairs[-1][0] - pairs[0][0]
+                fc = pairs[-1][1] - pairs[0][1] if all(c is not None for _, c in pairs) else None
+                if fc is not None and fc > 0 and abs(fc - span) <= CLOCK_AGREEMENT * span:
+                    span, clock = fc, "flight controller time stamp"
+                measured = (n - 1) / span if span > 0 else None
             out[item] = {"expected_hz": rates.get(item, 0), "frames": n,
-                         "measured_hz": None if measured is None else round(measured, 2)}
+                         "measured_hz": None if measured is None else round(measured, 2), "clock": clock}
         return out
 
     def frames_between(self, t0: float, t1: float) -> list[tuple[float, int, int]]:

@@ -129,3 +129,15 @@ def open_frame(raw: bytes, key: bytes | None = None) -> Opened:
         return Opened(h, False, h["session"], h["seq"], encrypted, None, None, b"",
                       "" if not data else "DATA shorter than command set and id")
     return Opened(h, False, h["session"], h["seq"], encrypted, data[0], data[1], data[2:])
+
+
+def commands_sent(records, key: bytes | None = None) -> list[Opened]:
+    """The frames of a capture's sent (tx) records, opened, in the order they were sent."""
+    from .capture import TX
+    from .deframe import Deframer, Frame
+
+    deframer, out = Deframer(), []
+    for rec in records:
+        if rec.direction == TX:
+            out += [open_frame(ev.raw, key) for ev in deframer.feed(rec.data) if isinstance(ev, Frame)]
+    return out

@@ -3,3 +3,13 @@
 
 class UsageError(Exception):
     """A problem with what the user asked for (arguments, unreadable input)."""
+
+
+def exit_status_of_signal(signame: str) -> int:
+    """Exit status of a command ended by SIGINT or SIGTERM after it wrote what
+    it had (partial reports marked interrupted): the shell's 128 + the signal
+    number, 130 for SIGINT and 143 for SIGTERM, as `osdkc` returns 130 for any
+    command interrupted with Ctrl-C."""
+    import signal
+
+    return 128 + signal.Signals[signame].value

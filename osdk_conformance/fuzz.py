@@ -24,14 +24,14 @@ error class testee_crash / testee_timeout / testee_garbage. An
 `unsupported` answer makes the example not count.
 
 On the first disagreement Hypothesis shrinks the example; the minimised
-input and every testee's answer are printed, and a ready-to-add vector
-group (FORMAT.md: operation, profile and one test whose result and expected
+input and every testee's answer are printed, and a vector file
+(FORMAT.md, one group: operation, profile and one test whose result and expected
 come from osdk_conformance.reference.answer, category fuzz.regression; its
 one flag is the spec rule behind the reference's error class, or of the
 operation, because vectors.schema.json wants at least one; refine it when
 adding the case to tools/gen_vectors.py) is written to --out (default: standard output, the report then goes to
-standard error). Exit status 1. Without a disagreement within the budget
-the command prints a summary (examples run, executions per second per
+standard error); `osdkc run --vectors` replays it as it is. Exit status 1.
+Without a disagreement within the budget the command prints a summary (examples run, executions per second per
 operation) and exits 0.
 
 Budget and reproducibility. Hypothesis runs in batches of at most
@@ -655,21 +655,23 @@ def suite_document(group: dict) -> dict:
 
 
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
+    from .options import non_negative_int, positive_float, positive_int
     from .runner import ALL, BUNDLED_IMPLS
 
     p.add_argument("--testee", action="append", default=[], metavar="COMMAND",
                    help="command that starts an implementation (split like a shell does; repeatable)")
     p.add_argument("--impl", action="append", default=[], choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
                    help=f"a bundled implementation (repeatable; {', '.join(BUNDLED_IMPLS)}), or {ALL} for every one")
-    p.add_argument("--seconds", type=float, metavar="N",
+    p.add_argument("--seconds", type=positive_float, metavar="N",
                    help=f"time budget in seconds (default {DEFAULT_SECONDS:g} unless --max-examples is given)")
-    p.add_argument("--max-examples", type=int, metavar="N", help="stop after N examples")
-    p.add_argument("--seed", type=int, metavar="S", help="Hypothesis seed (default: random, printed)")
-    p.add_argument("--out", metavar="FILE", help="where the regression vector group goes (default: stdout)")
+    p.add_argument("--max-examples", type=positive_int, metavar="N", help="stop after N examples")
+    p.add_argument("--seed", type=non_negative_int, metavar="S", help="Hypothesis seed (default: random, printed)")
+    p.add_argument("--out", metavar="FILE",
+                   help="where the regression vector file goes (default: stdout); `osdkc run --vectors FILE` replays it")
     p.add_argument("--op", action="append", choices=FUZZ_OPS, metavar="OP",
                    help=f"only this operation (repeatable; {', '.join(FUZZ_OPS)})")
     p.add_argument("--profile", action="append", choices=profiles, metavar="PROFILE", help="only this profile (repeatable)")
-    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
+    p.add_argument("--timeout", type=positive_float, default=DEFAULT_TIMEOUT, metavar="S",
                    help=f"seconds per request (default {DEFAULT_TIMEOUT:g})")
 
 
@@ -712,12 +714,6 @@ def run_fuzz(args: argparse.Namespace) -> int:
         raise UsageError(str(e)) from None
     if len(commands) < 2:
         raise UsageError("give at least two implementations (--testee COMMAND / --impl NAME)")
-    if args.max_examples is not None and args.max_examples < 1:
-        raise UsageError("--max-examples must be at least 1")
-    if args.seconds is not None and not args.seconds > 0:
-        raise UsageError("--seconds must be positive")
-    if not args.timeout > 0:
-        raise UsageError("--timeout must be positive")
     seconds = args.seconds if args.seconds is not None else (None if args.max_examples else DEFAULT_SECONDS)
     if args.out:
         parent = Path(args.out).resolve().parent
@@ -743,13 +739,13 @@ def run_fuzz(args: argparse.Namespace) -> int:
     if outcome.flaky:
         human.write("note: the disagreement did not reproduce every time (a testee is not deterministic)\n")
     group = regression_group(outcome.found, [f.label for f in fuzzees], outcome.seed)
-    text = json.dumps(group, indent=1, sort_keys=True, allow_nan=False) + "\n"
+    text = json.dumps(suite_document(group), indent=1, sort_keys=True, allow_nan=False) + "\n"
     if args.out:
         try:
             Path(args.out).write_text(text, encoding="utf-8")
         except OSError as e:
             raise UsageError(f"cannot write {args.out}: {e.strerror or e}") from None
-        human.write(f"regression vector group written to {args.out}\n")
+        human.write(f"regression vector file written to {args.out} (replay: osdkc run --vectors {args.out})\n")
     else:
         human.flush()
         sys.stdout.write(text)

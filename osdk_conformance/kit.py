@@ -99,7 +99,7 @@ def _acceptance_on_simulator() -> int:
 
 def run_kit(args: argparse.Namespace | None = None) -> int:
     print("== specification")
-    failed = 1 if run_spec_check() else 0
+    failed = 1 if run_spec_check(args) else 0  # args.seed: the trace's seed, if given
     print("== worked frames (PROTOCOL-FACTS section 1)")
     passed = 0
     for wf in WORKED_FRAMES:

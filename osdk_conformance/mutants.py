@@ -742,6 +742,360 @@ def _e15_ignored() -> None:
     _as_other_byte(lambda byte, profile: (byte, "m100-fw3.1") if profile == "m100-fw2.3" else None)
 
 
+# ============================================================== bug classes of osdk_conformance.vector_tables
+#
+# One realistic fault per cell of the tables `osdkc vectors coverage` shows:
+# a stream decoder resuming at the wrong place after an error class, ACK
+# matching that remembers or forgets wrongly, two frame rules checked in
+# the other order, the movement checks in the other order, and every header
+# field read one bit too wide or too narrow.
+
+
+@_mutant("value_error_rescans_after_sof", "after a frame whose value does not decode (bad_session, bad_encryption, "
+         "payload errors) the receiver rescans from the byte after its start byte, as after a bad CRC-32",
+         "rule:stream.resync")
+def _value_error_rescans_after_sof() -> None:
+    from osdk_conformance import decode, deframe
+
+    rejected: list[bool] = []
+    original_event = decode.Decoder.event
+
+    def event(self, ev):
+        out = original_event(self, ev)
+        rejected.append(isinstance(ev, deframe.Frame) and out["kind"] == "error")
+        return out
+
+    original_scan = deframe.Deframer._scan
+
+    def _scan(self, final):
+        for ev in original_scan(self, final):
+            yield ev  # the decoder judges it before the receiver resumes
+            if isinstance(ev, deframe.Frame) and rejected and rejected.pop():
+                n = len(ev.raw)  # put all but the start byte back behind the frame the receiver drops next
+                self._buf[n:n] = ev.raw[1:]
+                self._base -= n - 1
+
+    decode.Decoder.event = event
+    deframe.Deframer._scan = _scan
+
+
+@_mutant("truncated_tail_no_rescan", "a frame cut off by the end of the stream is reported as truncated_frame, "
+         "but the bytes after its start byte are not rescanned", "rule:stream.truncated_tail", "rule:stream.resync")
+def _truncated_tail_no_rescan() -> None:
+    from osdk_conformance.deframe import Rejected
+
+    def no_rescan(d, ev):
+        if isinstance(ev, Rejected) and ev.error == "truncated_frame":
+            d._drop(len(d._buf))
+        return ev
+
+    _on_deframer_events(no_rescan)
+
+
+def _on_decoded_frames(fn: Callable[[Any, Any, dict, dict], dict]) -> None:
+    """ACK matching after each frame: fn(decoder, frame event, pending table
+    before, answer) returns the answer and may change decoder._pending."""
+    from osdk_conformance.decode import Decoder
+
+    original = Decoder._frame
+
+    def _frame(self, ev):
+        before = dict(self._pending)
+        return fn(self, ev, before, original(self, ev))
+
+    Decoder._frame = _frame
+
+
+def _header(ev) -> dict:
+    from osdk_conformance.deframe import header_fields
+
+    return header_fields(ev.raw[:12])
+
+
+@_mutant("ack_repeat_matched", "a matched command is not forgotten: a repeated ACK is decoded again",
+         "rule:stream.ack_match")
+def _ack_repeat_matched() -> None:
+    def keep(decoder, ev, before, out):
+        if "ack_of" in out:
+            decoder._pending = before
+        return out
+
+    _on_decoded_frames(keep)
+
+
+@_mutant("ack_match_seq_only", "ACKs matched to commands by SEQ alone (the session is ignored)", "rule:stream.ack_match")
+def _ack_match_seq_only() -> None:
+    from osdk_conformance.decode import Decoder
+
+    class BySeq(dict):
+        @staticmethod
+        def _k(key):
+            return key[1] if isinstance(key, tuple) else key
+
+        def __contains__(self, key):
+            return super().__contains__(self._k(key))
+
+        def __setitem__(self, key, value):
+            super().__setitem__(self._k(key), value)
+
+        def pop(self, key, *default):
+            return super().pop(self._k(key), *default)
+
+    original = Decoder.__init__
+
+    def __init__(self, *a, **kw):
+        original(self, *a, **kw)
+        self._pending = BySeq()
+
+    Decoder.__init__ = __init__
+
+
+@_mutant("ack_last_command_only", "only the latest command is remembered (one slot instead of a table)",
+         "rule:stream.ack_match")
+def _ack_last_command_only() -> None:
+    def one_slot(decoder, ev, before, out):
+        added = [k for k in decoder._pending if k not in before or decoder._pending[k] != before[k]]
+        if added:
+            decoder._pending = {added[-1]: decoder._pending[added[-1]]}
+        return out
+
+    _on_decoded_frames(one_slot)
+
+
+@_mutant("ack_first_command_kept", "a second command with the same session and SEQ does not replace the first one",
+         "rule:stream.ack_match")
+def _ack_first_command_kept() -> None:
+    def first_wins(decoder, ev, before, out):
+        for k, cmd in before.items():
+            if k in decoder._pending:
+                decoder._pending[k] = cmd
+        return out
+
+    _on_decoded_frames(first_wins)
+
+
+@_mutant("ack_rejected_command_remembered", "a command whose value does not decode is still remembered for its ACK",
+         "rule:stream.ack_match")
+def _ack_rejected_command_remembered() -> None:
+    def remember(decoder, ev, before, out):
+        h = _header(ev)
+        if out["kind"] == "error" and not h["is_ack"] and h["session"] and h["enc"] == 0 and len(ev.raw) > 17:
+            decoder._pending[(h["session"], h["seq"])] = (ev.raw[12], ev.raw[13])
+        return out
+
+    _on_decoded_frames(remember)
+
+
+@_mutant("ack_header_only_consumes", "a header-only ACK (no value) consumes the command, so its real ACK is not "
+         "matched", "rule:stream.ack_match", "rule:frame.header_only")
+def _ack_header_only_consumes() -> None:
+    def consume(decoder, ev, before, out):
+        h = _header(ev)
+        if h["is_ack"] and h["len"] == 12:
+            decoder._pending.pop((h["session"], h["seq"]), None)
+        return out
+
+    _on_decoded_frames(consume)
+
+
+def _header_rules_in_order(order: tuple[str, ...]) -> None:
+    """The receiver's header checks (deframe.header_problem, also used by
+    decode_frame) run in `order` instead of CRC-16, VER, RES0, RES1, LEN."""
+    from osdk_conformance import deframe, reference
+
+    def header_problem(header: bytes) -> tuple[str, str] | None:
+        f = deframe.header_fields(header)
+        checks = {
+            "crc16": deframe.crc16(header[:10]) != f["crc16"] and ("bad_crc16", "CRC-16 wrong"),
+            "ver": f["ver"] != 0 and ("bad_version", "VER not 0"),
+            "res0": f["res0"] != 0 and ("reserved_bits", "RES0 not 0"),
+            "res1": f["res1"] != 0 and ("reserved_bits", "RES1 not 0"),
+            "len": (f["len"] < 12 or 12 < f["len"] <= 16) and ("impossible_length", "LEN impossible"),
+        }
+        return next((checks[name] for name in order if checks[name]), None)
+
+    deframe.header_problem = header_problem
+    reference.header_problem = header_problem
+
+
+@_mutant("crc16_checked_last", "the header's CRC-16 checked after VER, RES0, RES1 and LEN (the order of the SDK's "
+         "verifyHead)", "rule:frame.crc16")
+def _crc16_checked_last() -> None:
+    _header_rules_in_order(("ver", "res0", "res1", "len", "crc16"))
+
+
+@_mutant("len_checked_before_ver", "LEN checked before VER, RES0 and RES1", "rule:frame.len", "rule:frame.ver")
+def _len_checked_before_ver() -> None:
+    _header_rules_in_order(("crc16", "len", "ver", "res0", "res1"))
+
+
+@_mutant("reserved_checked_before_ver", "RES0 and RES1 checked before VER", "rule:frame.reserved", "rule:frame.ver")
+def _reserved_checked_before_ver() -> None:
+    _header_rules_in_order(("crc16", "res0", "res1", "ver", "len"))
+
+
+@_mutant("enc_checked_before_session", "ENC/PADDING checked before the ACK-in-session-0 rule", "rule:frame.session",
+         "rule:frame.enc", "E23", "E24")
+def _enc_checked_before_session() -> None:
+    from osdk_construct import frame
+
+    _swap_fields(frame._header_bits.subcon.subcon.subcon, "_valid_session", "_valid_enc")
+    _clear_layout_caches()
+
+
+@_mutant("size_checked_before_header", "decode_frame compares the byte count with LEN before checking the header",
+         "rule:frame.extra_bytes", "rule:frame.truncation")
+def _size_checked_before_header() -> None:
+    from osdk_conformance import reference
+
+    original = reference.frame_problem
+
+    def frame_problem(data: bytes):
+        if len(data) >= 12 and data[0] == 0xAA and len(data) != reference.frame_length(data):
+            short = len(data) < reference.frame_length(data)
+            return ("truncated_frame" if short else "length_mismatch"), "byte count differs from LEN"
+        return original(data)
+
+    reference.frame_problem = frame_problem
+
+
+@_mutant("session_enc_in_header_check", "bad_session and bad_encryption found by the receiver's header check "
+         "(before LEN and CRC-32; the start byte dropped and the rest rescanned)", "rule:frame.session",
+         "rule:frame.enc", "rule:stream.resync")
+def _session_enc_in_header_check() -> None:
+    from osdk_conformance import deframe, reference
+
+    original = deframe.header_problem
+
+    def header_problem(header: bytes):
+        problem = original(header)
+        f = deframe.header_fields(header)
+        if problem is None and f["is_ack"] and f["session"] == 0:
+            return "bad_session", "ACK in session 0"
+        if problem is None and (f["padding"] if f["enc"] == 0 else not (
+                f["enc"] == 1 and 1 <= f["padding"] <= 16 and f["len"] > 16 and (f["len"] - 16) % 16 == 0)):
+            return "bad_encryption", "ENC/PADDING impossible"
+        return problem
+
+    deframe.header_problem = header_problem
+    reference.header_problem = header_problem
+
+
+def _movement_check_first(problem: Callable[[bytes, str], tuple[str, str] | None]) -> None:
+    """check_movement_control runs problem(bytes, profile) before its own checks."""
+    from osdk_conformance import reference
+
+    original = reference._OPS["check_movement_control"]
+
+    def check(profile, inp):
+        found = problem(reference._hex(inp), profile)
+        return reference.error(*found) if found else original(profile, inp)
+
+    reference._OPS["check_movement_control"] = check
+
+
+@_mutant("movement_mode_before_length", "check_movement_control judges the mode byte before the value's length",
+         "rule:control.value", "rule:control.undefined_mode")
+def _movement_mode_before_length() -> None:
+    from osdk_conformance.rules import classify_control_mode
+
+    def mode(data: bytes, profile: str):
+        if data and classify_control_mode(data[0], profile)["classification"] != "documented":
+            return "undefined_mode", "mode byte not documented"
+        return None
+
+    _movement_check_first(mode)
+
+
+@_mutant("movement_non_finite_before_mode", "check_movement_control rejects NaN and infinite setpoints "
+         "(out_of_range) before it judges the mode byte", "rule:control.non_finite", "rule:control.undefined_mode")
+def _movement_non_finite_before_mode() -> None:
+    import math
+    import struct
+
+    def non_finite(data: bytes, profile: str):
+        if len(data) == 17 and not all(math.isfinite(v) for v in struct.unpack("<4f", data[1:])):
+            return "out_of_range", "a setpoint is not finite"
+        return None
+
+    _movement_check_first(non_finite)
+
+
+HEADER_FIELD_RULES = {"len": "rule:frame.len", "ver": "rule:frame.ver", "session": "rule:frame.session",
+                      "res0": "rule:frame.reserved", "padding": "rule:frame.enc", "enc": "rule:frame.enc",
+                      "res1": "rule:frame.reserved"}
+"""The rule guarding each header bit field whose width a mutant changes (is_ack, one bit, keeps its width)."""
+
+
+def _header_widths(widths: dict[str, int]) -> None:
+    """Read the header's bit fields (bytes 1-7) with other widths, adding up
+    to the same 56 bits: in the receiver (its checks and LEN) and in the
+    Construct layout."""
+    import construct
+    from osdk_conformance import deframe, reference
+    from osdk_construct import frame
+    from osdk_construct.enums import ENCRYPTION
+
+    layout = frame._header_bits._layout()[1]
+
+    def fields(header: bytes) -> dict[str, int]:
+        v, lsb, out = int.from_bytes(header[1:8], "little"), 0, {}
+        for name, _, _, _ in layout:
+            out[name] = v >> lsb & (1 << widths[name]) - 1
+            lsb += widths[name]
+        return out
+
+    def frame_length(data: bytes) -> int:
+        return fields(data)["len"]
+
+    def header_problem(header: bytes) -> tuple[str, str] | None:
+        if deframe.crc16(header[:10]) != header[10] | header[11] << 8:
+            return "bad_crc16", "CRC-16 wrong"
+        f = fields(header)
+        if f["ver"]:
+            return "bad_version", "VER not 0"
+        if f["res0"] or f["res1"]:
+            return "reserved_bits", "RES0/RES1 not 0"
+        if f["len"] < 12 or 12 < f["len"] <= 16:
+            return "impossible_length", "LEN impossible"
+        return None
+
+    for module in (deframe, reference):
+        module.frame_length = frame_length
+        module.header_problem = header_problem
+    kinds = {"int": lambda w: construct.BitsInteger(w), "const": lambda w: construct.Const(0, construct.BitsInteger(w)),
+             "enum": lambda w: construct.Enum(construct.BitsInteger(w), **ENCRYPTION)}
+    for name, kind, width, _ in layout:
+        if widths[name] != width:
+            _replace_field(frame._header_bits, name, lambda old, kind=kind, w=widths[name]: kinds[kind](w))
+    _clear_layout_caches()
+
+
+def _register_header_width_mutants() -> None:
+    """For every boundary between two adjacent header bit fields (but the
+    one-bit ACK flag's), the field below it read one bit wider and the one
+    above one bit narrower, and the other way round."""
+    from osdk_construct import frame
+
+    layout = [(name, width) for name, _, width, _ in frame._header_bits._layout()[1]]
+    for (low, lw), (high, hw) in zip(layout, layout[1:]):
+        if "is_ack" in (low, high):
+            continue
+        for wider, narrower, shift in ((low, high, +1), (high, low, -1)):
+            widths = dict(layout)
+            widths[low] += shift
+            widths[high] -= shift
+            name = f"{wider}_takes_a_{narrower}_bit"
+            description = (f"header {wider.upper()} read with {widths[wider]} bits (taking the "
+                           f"{'lowest' if shift > 0 else 'highest'} bit of {narrower.upper()}), "
+                           f"{narrower.upper()} with {widths[narrower]}")
+            _mutant(name, description, *sorted({HEADER_FIELD_RULES[low], HEADER_FIELD_RULES[high]}))(
+                functools.partial(_header_widths, widths))
+
+
+_register_header_width_mutants()
+
+
 # ============================================================== misbehaving processes
 
 

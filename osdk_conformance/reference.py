@@ -30,6 +30,10 @@ Decisions this module takes where the operation's description leaves room
   the order in which a stream receiver meets the same problems.
 - decode_stream splits the bytes into reads of the given `chunks` sizes; a
   remainder not covered by `chunks` arrives as one last read.
+- check_movement_control checks, in order: the value's length (it must
+  parse as 17 bytes: `truncated_payload` / `length_mismatch`, whatever the
+  mode byte), the mode byte (`undefined_mode`, whatever the setpoints), then
+  the setpoints (`out_of_range`).
 - check_movement_control maps x and y to the combination's horizontal range,
   z to its vertical range and yaw to its yaw range; limits are inclusive,
   compared as the float32's exact value; NaN and infinities are always out

@@ -174,21 +174,23 @@ def _esc(value: Any) -> str:
 
 def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
                 appendix: dict[str, str] | None = None, max_cases: int = 2000,
-                extra_html: str | None = None) -> str:
+                extra_html: str | None = None, verdict: tuple[str, bool] | None = None) -> str:
     """A self-contained HTML page (no external assets, no scripts). Every
     case that did not pass is listed with its details, up to `max_cases`
     (fail, xpass and error first); `appendix` adds titled text blocks;
     `extra_html` (trusted markup, e.g. inline SVG plots) goes after the
-    table by category."""
+    table by category. `verdict` (its line and whether it is good) replaces
+    the CONFORMS / DOES NOT CONFORM drawn from the statuses alone, for
+    callers that know more (what ran, an interruption)."""
     by_cat = counts_by_category(results)
     total: Counter = Counter()
     for c in by_cat.values():
         total.update(c)
-    ok = conforms(results)
+    line, ok = verdict or (("CONFORMS", True) if conforms(results) else ("DOES NOT CONFORM", False))
     out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
            f"<title>{_esc(title)}</title><style>{_CSS}</style></head><body>",
            f"<h1>{_esc(title)}</h1>",
-           f'<p class="verdict {"ok" if ok else "no"}">{"CONFORMS" if ok else "DOES NOT CONFORM"}</p>']
+           f'<p class="verdict {"ok" if ok else "no"}">{_esc(line)}</p>']
     meta = dict(meta or {})
     meta.setdefault("generated", time.strftime("%Y-%m-%d %H:%M:%S %z"))
     out.append('<table class="meta"><tbody>')
@@ -252,5 +254,7 @@ def write_junit(path: str | Path, results: Sequence[Result], suite_name: str,
 
 
 def write_html(path: str | Path, results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
-               appendix: dict[str, str] | None = None, extra_html: str | None = None) -> None:
-    Path(path).write_text(html_report(results, title, meta, appendix, extra_html=extra_html), encoding="utf-8")
+               appendix: dict[str, str] | None = None, extra_html: str | None = None,
+               verdict: tuple[str, bool] | None = None) -> None:
+    Path(path).write_text(html_report(results, title, meta, appendix, extra_html=extra_html, verdict=verdict),
+                          encoding="utf-8")

@@ -266,13 +266,15 @@ def report(outcome: SelftestOutcome, max_failures: int, out: TextIO) -> None:
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
+    from .options import non_negative_int, positive_float, positive_int
+
     p.add_argument("--mutant", action="append", metavar="NAME", help="only this mutant (repeatable; default: all)")
-    p.add_argument("--jobs", type=int, default=DEFAULT_JOBS, metavar="N",
+    p.add_argument("--jobs", type=positive_int, default=DEFAULT_JOBS, metavar="N",
                    help=f"mutants run in parallel (default {DEFAULT_JOBS})")
-    p.add_argument("--max-failures", type=int, default=DEFAULT_MAX_FAILURES, metavar="N",
+    p.add_argument("--max-failures", type=non_negative_int, default=DEFAULT_MAX_FAILURES, metavar="N",
                    help=f"stop a mutant's run after N failing vectors (default {DEFAULT_MAX_FAILURES}; "
                         "0: replay every vector and count all failures)")
-    p.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
+    p.add_argument("--timeout", type=positive_float, default=DEFAULT_TIMEOUT, metavar="S",
                    help=f"seconds per request (default {DEFAULT_TIMEOUT:g}; the hanging mutant waits this long)")
     p.add_argument("--no-baseline", action="store_true", help="skip the run of the harness without a fault")
     p.add_argument("--vectors", action="append", metavar="FILE",
@@ -287,12 +289,6 @@ def run_selftest(args: argparse.Namespace) -> int:
         for m in mutants.MUTANTS.values():
             print(f"{m.name:30} {', '.join(m.violates):45} {m.description}")
         return 0
-    if args.jobs < 1:
-        raise UsageError("--jobs must be at least 1")
-    if args.max_failures < 0:
-        raise UsageError("--max-failures must be 0 (no limit) or positive")
-    if not args.timeout > 0:
-        raise UsageError("--timeout must be a positive number of seconds")
     outcome = selftest(args.mutant, jobs=args.jobs, max_failures=args.max_failures, timeout=args.timeout,
                        baseline=not args.no_baseline, vector_files=args.vectors)
     report(outcome, args.max_failures, sys.stdout)

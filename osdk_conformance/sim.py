@@ -34,6 +34,8 @@ import tty
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from osdk_construct.payload import VERSION_ID_SIZE, has_version_id
+
 from .deframe import Deframer, Frame
 from .device_wire import encode, key_option, open_frame
 from .errors import UsageError
@@ -46,6 +48,8 @@ COMMAND_TIMEOUT = 0.5   # s without movement control: hover
 TAU = 0.25              # s, first-order lag of every controlled quantity
 RC_MODE = {"P": -8000, "A": 0, "F": 8000}
 FAULTS = ("noise", "bitflip", "drop_bytes", "truncate", "bad_crc", "duplicate")
+VERSION_ID = b"SIM-0001"
+"""What the simulator puts in the FW 3.1 version ACK's 11-byte version ID (ERRATA E30)."""
 VERSION_NAME = {
     "m100-fw2.3": b"SIM-M100-02.03.10.00",
     "m100-fw3.1": b"SIM-M100-03.01.10.00",
@@ -384,6 +388,7 @@ class SimConfig:
     baud: int | None = None
     hold: bool = False
     rates: dict[str, int] | None = None
+    log_broadcast: str | None = None   # JSON lines: SEQ and value (before fault injection) of every broadcast sent
 
 
 # A pty counts only the bytes that reached the client's side; bytes the
@@ -420,7 +425,12 @@ class Simulator:
         self.outbuf = bytearray()
         self.stats = {"frames_sent": 0, "broadcast_frames": 0, "acks_sent": 0, "bytes_sent": 0,
                       "frames_dropped_tx_full": 0, "commands_received": 0, "frames_rejected": 0,
-                      "faults": {f: 0 for f in FAULTS}}
+                      "movement_commands": 0, "movement_commands_encrypted": 0,
+                      "faults": {f: 0 for f in FAULTS},
+                      # Every byte the host sent is accounted for: heard as part of a frame, or
+                      # discarded for a reason (not_a_frame is settled at exit, see rx_accounting).
+                      "rx_bytes": 0, "rx_bytes_discarded": {"baud_mismatch": 0, "stalled": 0, "not_a_frame": 0}}
+        self._rx_frame_bytes = 0
         self.running = True
         self.broadcasting = not cfg.hold
         self.start = time.monotonic()
@@ -430,10 +440,10 @@ class Simulator:
         self.send_at = self.start
         self.battery = 90.0
         self.baud_ok = True
-        self._last_speed_check = 0.0
         self.unplugged_until: float | None = None
         self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
         self._current_raw = b""
+        self.broadcast_log = open(cfg.log_broadcast, "w", buffering=1) if cfg.log_broadcast else None
 
     # ---- broadcast -------------------------------------------------------
 
@@ -512,10 +522,14 @@ class Simulator:
         if not items:
             return
         value = self.broadcast_value(items, now)
-        frame = encode(cmd_set=2, cmd_id=0, value=value, seq=self._next_seq(),
+        seq = self._next_seq()
+        frame = encode(cmd_set=2, cmd_id=0, value=value, seq=seq,
                        key=self.cfg.key if self.cfg.encrypt else None)
         self.stats["broadcast_frames"] += 1
+        queued = self.stats["frames_sent"]
         self._send(self._inject(frame), frames=1)
+        if self.broadcast_log and self.stats["frames_sent"] > queued:
+            self.broadcast_log.write(json.dumps({"seq": seq, "value": value.hex()}) + "\n")
 
     def _inject(self, frame: bytes) -> bytes:
         f, rng = self.cfg.faults, self.rng
@@ -564,13 +578,35 @@ class Simulator:
     # ---- commands --------------------------------------------------------
 
     def on_bytes(self, data: bytes, now: float) -> None:
-        if not self.baud_ok:
-            return
         for ev in self.deframer.feed(data):
             if isinstance(ev, Frame):
+                self._rx_frame_bytes += len(ev.raw)
                 self.on_frame(ev.raw, now)
             else:
                 self.stats["frames_rejected"] += 1
+
+    def on_received(self, data: bytes, now: float, stalled: bool) -> None:
+        """Bytes read from the host. The line speed is looked at now, when
+        they arrive: a UART hears a host that writes right after setting its
+        speed, so a check on a timer would lose the first command."""
+        discarded = self.stats["rx_bytes_discarded"]
+        self.stats["rx_bytes"] += len(data)
+        if stalled:
+            discarded["stalled"] += len(data)
+            return
+        self._check_speed()
+        if not self.baud_ok:
+            discarded["baud_mismatch"] += len(data)
+            return
+        self.on_bytes(data, now)
+
+    def rx_accounting(self) -> dict:
+        """The receive counters at the end: bytes in no frame (garbage,
+        rejected headers, a frame cut off when the run ended) are not_a_frame."""
+        discarded = dict(self.stats["rx_bytes_discarded"])
+        discarded["not_a_frame"] = (self.stats["rx_bytes"] - discarded["baud_mismatch"] - discarded["stalled"]
+                                    - self._rx_frame_bytes)
+        return {"rx_bytes": self.stats["rx_bytes"], "rx_bytes_discarded": discarded}
 
     def _ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, body: dict) -> None:
         if session == 0:
@@ -588,6 +624,9 @@ class Simulator:
             return
         self._current_raw = raw
         self.stats["commands_received"] += 1
+        if op.cmd_set == 0x01 and op.cmd_id == 0x03:
+            self.stats["movement_commands"] += 1
+            self.stats["movement_commands_encrypted"] += op.encrypted
         if op.session > 0:
             cached = self.last_ack.get(op.session)
             if cached and cached[0] == op.seq and cached[1] == raw:
@@ -602,8 +641,9 @@ class Simulator:
             return   # a value that does not decode gets no answer, as from a real FC
         if key == (0x00, 0x00):
             self._ack(0, 0, op.session, op.seq, {
-                "ack_code": "activated" if self.activated else "not_activated",
-                "version_crc": 0x5A17C0DE, "version_name": VERSION_NAME[self.profile.name].ljust(32, b"\0")})
+                "ack_code": "activated" if self.activated else "not_activated", "version_crc": 0x5A17C0DE,
+                "version_id": VERSION_ID.ljust(VERSION_ID_SIZE, b"\0") if has_version_id(self.profile.name) else None,
+                "version_name": VERSION_NAME[self.profile.name].ljust(32, b"\0")})
         elif key == (0x00, 0x01):
             if self.cfg.app_id is not None and req.app_id != self.cfg.app_id:
                 code = "invalid_parameters"
@@ -630,6 +670,12 @@ class Simulator:
         elif key == (0x01, 0x03):
             if self.control == "onboard":
                 self.vehicle.set_command(op.value[0], float(req.x), float(req.y), float(req.z), float(req.yaw), now)
+
+    def authority_state(self) -> dict:
+        """Who has control and the broadcast rates now (for --stats: what a client left behind)."""
+        return {"control": self.control, "control_pending": self.pending, "activated": self.activated,
+                "rates": dict(self.rates),
+                "initial_rates": {**self.profile.default_rates_hz, **(self.cfg.rates or {})}}
 
     def _control_request(self, obtain: int) -> int:
         if not self.activated:
@@ -659,10 +705,9 @@ class Simulator:
 
     # ---- main loop -------------------------------------------------------
 
-    def _check_speed(self, now: float) -> None:
-        if self.cfg.baud is None or now - self._last_speed_check < 0.1:
+    def _check_speed(self) -> None:
+        if self.cfg.baud is None:
             return
-        self._last_speed_check = now
         speed = self.t.speed()
         want = getattr(termios, f"B{self.cfg.baud}", None)
         self.baud_ok = speed is None or want is None or speed == want
@@ -698,18 +743,18 @@ class Simulator:
             now = time.monotonic()
             for fd in r:
                 data = self.t.on_readable(fd)
-                if data and not stalled:
-                    self.on_bytes(data, now)
+                if data:
+                    self.on_received(data, now, stalled)
             if w:
                 self._flush()
             self.vehicle.step(now - self.last_step, now)
             self.battery = max(0.0, self.battery - (now - self.last_step) / 60.0)
             self.last_step = now
-            self._check_speed(now)
             if not self.broadcasting or stalled or not period:
                 self.next_frame = self.send_at = now
                 continue
             if now >= self.send_at:
+                self._check_speed()
                 self.emit_broadcast(now)
                 self.next_frame += period
                 if self.next_frame < now - 0.25:   # fell far behind (suspended): do not burst
@@ -740,36 +785,41 @@ class Simulator:
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    from .options import baud_rate, non_negative_float, non_negative_int, probability, rate_change, tcp_port, uint32
+
     ap.add_argument("--profile", default="a3-fw3.1", choices=profiles, help="broadcast wire profile (default a3-fw3.1)")
     where = ap.add_mutually_exclusive_group()
     where.add_argument("--pty", action="store_true", help="open a pseudo-terminal (the default)")
-    where.add_argument("--tcp", type=int, metavar="PORT", help="listen on TCP PORT (0: any free port) for socket:// URLs")
+    where.add_argument("--tcp", type=tcp_port, metavar="PORT", help="listen on TCP PORT (0: any free port) for socket:// URLs")
     ap.add_argument("--host", default="127.0.0.1", help="address to listen on with --tcp (default 127.0.0.1)")
     ap.add_argument("--link", metavar="PATH", help="with a pty: a symlink to it that survives --unplug-at")
-    ap.add_argument("--seed", type=int, help="random seed: the same seed gives the same faults")
-    ap.add_argument("--app-id", type=int, help="app id activation accepts (default: any)")
+    ap.add_argument("--seed", type=non_negative_int, help="random seed: the same seed gives the same faults")
+    ap.add_argument("--app-id", type=uint32, help="app id activation accepts (default: any)")
     ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
     ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt every frame sent (needs --key-env)")
     ap.add_argument("--rc-mode", choices=tuple(RC_MODE), default="F", help="RC mode switch (obtain control needs F)")
     ap.add_argument("--rate", action="append", default=[], metavar="ITEM=HZ", help="initial rate of an item (repeatable)")
-    ap.add_argument("--baud", type=int, help="the FC's baud rate; a pty client at another speed sees garbage")
+    ap.add_argument("--baud", type=baud_rate, help="the FC's baud rate; a pty client at another speed sees garbage")
     ap.add_argument("--hold", action="store_true", help="do not broadcast until SIGUSR1")
     ap.add_argument("--stats", metavar="FILE", help="write counters as JSON to FILE on exit")
+    ap.add_argument("--log-broadcast", metavar="FILE",
+                    help="write SEQ and value (hex, before fault injection) of every broadcast frame sent, "
+                         "a JSON object a line")
     f = ap.add_argument_group("fault injection (probabilities are per broadcast frame)")
     for name in FAULTS:
-        f.add_argument(f"--{name.replace('_', '-')}", type=float, default=0.0, metavar="P",
+        f.add_argument(f"--{name.replace('_', '-')}", type=probability, default=0.0, metavar="P",
                        help={"noise": "insert 1-16 random bytes before the frame",
                              "bitflip": "flip one random bit", "drop_bytes": "lose one random byte",
                              "truncate": "cut the frame short", "bad_crc": "corrupt the CRC-32",
                              "duplicate": "send the frame twice"}[name])
-    f.add_argument("--jitter", type=float, default=0.0, metavar="MS", help="delay each frame by 0..MS ms")
-    f.add_argument("--rate-drift", type=float, default=0.0, metavar="FRAC", help="run every rate FRAC faster (0.2 = +20%%)")
+    f.add_argument("--jitter", type=non_negative_float, default=0.0, metavar="MS", help="delay each frame by 0..MS ms")
+    f.add_argument("--rate-drift", type=rate_change, default=0.0, metavar="FRAC", help="run every rate FRAC faster (0.2 = +20%%)")
     f.add_argument("--implausible", action="store_true", help="broadcast implausible values (battery 150, ...)")
     f.add_argument("--wrong-profile", choices=profiles, help="broadcast in this profile's layout instead")
-    f.add_argument("--stall-at", type=float, metavar="S", help="stop sending and answering after S seconds")
-    f.add_argument("--unplug-at", type=float, metavar="S", help="close the port after S seconds ...")
-    f.add_argument("--unplug-for", type=float, default=1.0, metavar="S", help="... and reopen it S seconds later")
-    f.add_argument("--exit-after", type=float, metavar="S", help="exit after S seconds")
+    f.add_argument("--stall-at", type=non_negative_float, metavar="S", help="stop sending and answering after S seconds")
+    f.add_argument("--unplug-at", type=non_negative_float, metavar="S", help="close the port after S seconds ...")
+    f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S", help="... and reopen it S seconds later")
+    f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
 
 
 # ---- running the simulator as a child process (kit, soak, tests) ----------
@@ -790,13 +840,16 @@ def stop_child(proc) -> None:
 
 
 @contextlib.contextmanager
-def spawned(*sim_args: str, env: dict | None = None):
+def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
     """`osdkc sim SIM_ARGS` in a child process: yields (url, process) once it
-    has printed the URL of its port, and stops it on the way out."""
+    has printed the URL of its port, and stops it on the way out. With
+    `new_session` a Ctrl-C at the terminal does not reach it, so a host can
+    still hand back control through it before it is stopped."""
     import subprocess
 
     proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *sim_args],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            start_new_session=new_session)
     try:
         url = proc.stdout.readline().strip()
         if not url:
@@ -808,10 +861,6 @@ def spawned(*sim_args: str, env: dict | None = None):
 
 
 def run_sim(args: argparse.Namespace) -> int:
-    for name in FAULTS:
-        p = getattr(args, name)
-        if not 0.0 <= p <= 1.0:
-            raise UsageError(f"--{name.replace('_', '-')}: a probability is 0..1, got {p}")
     key = key_option(args.key_env, args.encrypt)
     from .rules import profile as load_profile
     prof = load_profile(args.profile)
@@ -826,12 +875,17 @@ def run_sim(args: argparse.Namespace) -> int:
                     rc_mode=args.rc_mode, faults={n: getattr(args, n) for n in FAULTS}, jitter_ms=args.jitter,
                     rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
-                    unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None)
+                    unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
+                    log_broadcast=args.log_broadcast)
     try:
         transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)
     except OSError as e:
         raise UsageError(f"cannot open the simulator's port: {e.strerror or e}") from None
-    sim = Simulator(cfg, transport)
+    try:
+        sim = Simulator(cfg, transport)
+    except OSError as e:
+        transport.close()
+        raise UsageError(f"--log-broadcast: cannot write {args.log_broadcast}: {e.strerror or e}") from None
 
     def stop(signum, frame):
         sim.running = False
@@ -851,8 +905,10 @@ def run_sim(args: argparse.Namespace) -> int:
         sim.drain()
     finally:
         transport.close()
-        stats = dict(sim.stats, profile=args.profile, seconds=round(time.monotonic() - sim.start, 3),
-                     last_seq=(sim.seq - 1) & 0xFFFF)
+        if sim.broadcast_log:
+            sim.broadcast_log.close()
+        stats = dict(sim.stats, **sim.rx_accounting(), profile=args.profile, seconds=round(time.monotonic() - sim.start, 3),
+                     last_seq=(sim.seq - 1) & 0xFFFF, **sim.authority_state())
         if args.stats:
             Path(args.stats).write_text(json.dumps(stats, indent=2) + "\n")
         print("osdkc sim: stopped; " + ", ".join(f"{k} {v}" for k, v in stats.items() if isinstance(v, int)),

@@ -26,10 +26,12 @@ from .errors import UsageError
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
-    ap.add_argument("--duration", type=float, default=60.0, metavar="S", help="seconds of streaming (default 60)")
-    ap.add_argument("--baud", type=int, default=921600, help="baud rate of the pty (default 921600)")
+    from .options import baud_rate, positive_float, positive_int
+
+    ap.add_argument("--duration", type=positive_float, default=60.0, metavar="S", help="seconds of streaming (default 60)")
+    ap.add_argument("--baud", type=baud_rate, default=921600, help="baud rate of the pty (default 921600)")
     ap.add_argument("--profile", default="a3-fw3.1", choices=profiles, help="wire profile (default a3-fw3.1)")
-    ap.add_argument("--hz", type=int, default=100, choices=(1, 10, 50, 100), help="rate of every item (default 100)")
+    ap.add_argument("--hz", type=positive_int, default=100, choices=(1, 10, 50, 100), help="rate of every item (default 100)")
     ap.add_argument("--json", action="store_true", help="print the numbers as one JSON object")
 
 
@@ -44,8 +46,6 @@ def run_soak(args: argparse.Namespace) -> int:
     from .rules import profile as load_profile
     from .sim import spawned, stop_child
 
-    if args.duration <= 0:
-        raise UsageError("--duration must be positive")
     prof = load_profile(args.profile)
     with tempfile.TemporaryDirectory(prefix="osdkc-soak-") as tmp:
         stats_path = Path(tmp) / "sim.json"

@@ -31,6 +31,9 @@ RULES: dict[str, str] = {
     "stream.chunking": "events do not depend on how the bytes are split into reads",
     "stream.truncated_tail": "a frame cut off by the end of the stream is truncated_frame, then rescanned",
     "stream.ack_match": "an ACK is decoded as the ACK of the command with its session and SEQ seen earlier",
+    "stream.ack_memory": "what ACK matching remembers: a match removes the entry even when its value fails to decode, "
+                         "a command that fails to decode changes nothing, at most 1024 entries with the oldest "
+                         "forgotten first and a replaced entry keeping its place",
     # broadcast (osdk_broadcast_*.ksy, rules.yaml#profiles, #/frame/broadcast)
     **{f"broadcast.flag_order.{p}": f"items follow the flag word in the flag-bit order of {p}" for p in PROFILES},
     "broadcast.item_sizes": "each item has its profile's size (time stamp 4/9, gimbal 12/13, control info 1/2, ...)",
@@ -52,7 +55,7 @@ RULES: dict[str, str] = {
     "control.non_finite": "NaN and infinite setpoints are out_of_range, also against an unbounded limit",
     # other payloads (osdk_payload.ksy)
     "payload.version_query": "get version: 1 arbitrary byte",
-    "payload.version_ack": "version ACK: u16 code, u32 version CRC, 32-byte name",
+    "payload.version_ack": "version ACK: u16 code, u32 version CRC, an 11-byte version ID on FW 3.1 (none on FW 2.3), 32-byte name",
     "payload.activation_request": "activation: u32 app id, u32 API level, u32 SDK version, 32-byte bundle id (44 bytes)",
     "payload.activation_ack": "activation ACK: u16 activation_result",
     "payload.frequency_request": "set frequency: 16 frequency codes in flag-bit order",

@@ -40,13 +40,13 @@ def render(status: dict) -> str:
 
 def update(status_path: Path, readme: Path = README) -> bool:
     """Rewrite the status section; False (and nothing written) when there is
-    no usable status, no README, or the run was a selection."""
+    no usable status, no README, or the run was a selection or interrupted."""
     try:
         status = json.loads(status_path.read_text())
         text = readme.read_text()
     except (OSError, ValueError):
         return False
-    if status.get("selection") or BEGIN not in text or END not in text:
+    if status.get("selection") or status.get("interrupted") or BEGIN not in text or END not in text:
         return False
     new = re.sub(re.escape(BEGIN) + r".*?" + re.escape(END), lambda _: render(status), text, flags=re.S)
     if new != text:

@@ -1,7 +1,7 @@
 """The golden vectors: loading them, comparing answers with them, checking them.
 
 The file format is vectors/FORMAT.md (schema: vectors/vectors.schema.json);
-tools/gen_vectors.py writes the files. Two functions are the interface the
+tools/gen_vectors.py writes the files. These functions are the interface the
 runner uses:
 
 `load_cases(paths=None) -> list[Case]`
@@ -13,6 +13,12 @@ runner uses:
     builds the protocol request line for it. Raises VectorFileError (a
     UsageError: `osdkc` exits 2 with its message) when a file cannot be
     read, is not JSON, or lacks the parts a case needs.
+
+`load_checked_cases(paths=None) -> list[Case]`
+    The same, every file validated as `osdkc vectors check` validates it
+    (`document_cases`: schema and numberOfTests; `case_problems`: ids unique
+    across all the files, known flags); what `osdkc run` loads. Raises
+    VectorFileError naming the first problem.
 
 `compare(case, response) -> (passed, reason)`
     Whether a testee's response object passes the case, per FORMAT.md:
@@ -114,10 +120,20 @@ def suite_files(directory: Path = VECTORS_DIR) -> list[Path]:
 
 
 def read_json(path: Path) -> Any:
+    return parse_json(_read_bytes(path), path)
+
+
+def _read_bytes(path: Path) -> bytes:
     try:
-        text = path.read_text(encoding="utf-8")
+        return path.read_bytes()
     except OSError as e:
         raise VectorFileError(f"cannot read {path}: {e.strerror or e}") from None
+
+
+def parse_json(raw: bytes, path: Path) -> Any:
+    """The JSON document in `raw` (read from `path`, for messages)."""
+    try:
+        text = raw.decode("utf-8")
     except UnicodeDecodeError as e:
         raise VectorFileError(f"{path} is not UTF-8: {e}") from None
     try:
@@ -185,8 +201,26 @@ def _short(v: Any) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
+def _ack_code_shown(v: Any) -> str:
+    """An ACK code (enum model or number) as messages show it: "0xFF01 not_activated"."""
+    from .commands import ack_code_text
+
+    if isinstance(v, dict) and isinstance(v.get("value"), int) and not isinstance(v["value"], bool):
+        return ack_code_text(v["value"]) + (f" {v['name']}" if isinstance(v.get("name"), str) else "")
+    if isinstance(v, int) and not isinstance(v, bool):
+        return ack_code_text(v)
+    return _short(v)
+
+
 def difference(expected: Any, got: Any, path: str = "result") -> str | None:
     """Where `got` first differs from `expected` (float models by bits), or None."""
+    d = _value_difference(expected, got, path)
+    if d is not None and path.endswith(".ack_code") and _kind(expected) == _kind(got):
+        return f"{path}: expected {_ack_code_shown(expected)}, got {_ack_code_shown(got)}"
+    return d
+
+
+def _value_difference(expected: Any, got: Any, path: str) -> str | None:
     if _is_float_model(expected):
         if not _is_float_model(got):
             return f"{path}: expected a float {_short(expected)}, got {_short(got)}"
@@ -392,6 +426,83 @@ def spec_difference(case: Case) -> str | None:
     return None if passed else reason
 
 
+def document_cases(doc: Any, name: str, validator) -> tuple[list[Case] | None, list[str]]:
+    """The cases of one parsed vector file and its problems: schema (the
+    cases are None when the schema rejects the file) and numberOfTests."""
+    errors = sorted(validator.iter_errors(doc), key=lambda e: list(map(str, e.absolute_path)))
+    problems = [f"{name}: schema: {'/'.join(map(str, e.absolute_path)) or '(top)'}: {e.message[:200]}"
+                for e in errors[:10]]
+    if len(errors) > 10:
+        problems.append(f"{name}: schema: ... and {len(errors) - 10} more")
+    if errors:
+        return None, problems
+    cases = cases_of(doc, name)
+    if doc["numberOfTests"] != len(cases):
+        problems.append(f"{name}: numberOfTests is {doc['numberOfTests']}, the file has {len(cases)} tests")
+    return cases, problems
+
+
+def case_problems(cases: Iterable[Case], seen: dict[str, str], rules: set[str], errata: set[str]) -> list[str]:
+    """Ids unique across files (`seen`: id -> file name, updated here) and
+    flags that name a known rule or errata entry."""
+    problems = []
+    for case in cases:
+        if case.id in seen:
+            problems.append(f"{case.file}: id {case.id} also in {seen[case.id]}")
+        seen[case.id] = case.file
+        for f in case.flags:
+            if f.startswith("rule:") and f[5:] not in rules:
+                problems.append(f"{case.id}: unknown rule {f}")
+            elif not f.startswith("rule:") and f not in errata:
+                problems.append(f"{case.id}: unknown errata id {f}")
+    return problems
+
+
+def _manifest_digests(directory: Path = VECTORS_DIR) -> set[str]:
+    try:
+        manifest = json.loads((directory / MANIFEST_NAME).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return set()
+    return {v for v in manifest.values() if isinstance(v, str)} if isinstance(manifest, dict) else set()
+
+
+def load_checked_cases(paths: Iterable[str | Path] | None = None) -> list[Case]:
+    """`load_cases`, but every file validated as `osdkc vectors check` does
+    (schema, numberOfTests, ids unique across all the files, known flags);
+    VectorFileError naming the first problem otherwise. A file whose SHA-256
+    vectors/MANIFEST.json lists is one tools/gen_vectors.py wrote and
+    `vectors check` guards: its schema pass (17 s for the shipped suites) is
+    skipped, the id and flag checks are not."""
+    files = [Path(p) for p in paths] if paths is not None else suite_files()
+    if not files:
+        raise VectorFileError(f"no vector files in {VECTORS_DIR}")
+    trusted = _manifest_digests()
+    validator = None
+    problems: list[str] = []
+    out: list[Case] = []
+    given: set[Path] = set()
+    for path in files:
+        if path.resolve() in given:
+            problems.append(f"{path}: given twice")
+            continue
+        given.add(path.resolve())
+        raw = _read_bytes(path)
+        doc = parse_json(raw, path)
+        if hashlib.sha256(raw).hexdigest() in trusted:
+            cases, file_problems = cases_of(doc, path.name), []
+        else:
+            validator = validator or _validator()
+            cases, file_problems = document_cases(doc, path.name, validator)
+        problems += file_problems
+        out += cases or []
+    rules, errata = known_flags()
+    problems += case_problems(out, {}, rules, errata)
+    if problems:
+        more = f" (and {len(problems) - 1} more problems)" if len(problems) > 1 else ""
+        raise VectorFileError(f"bad vector files: {problems[0]}{more}")
+    return out
+
+
 def check(directory: Path = VECTORS_DIR, spec: bool = True, out=sys.stdout) -> int:
     """`osdkc vectors check`: 0 all good, 1 problems; VectorFileError for unreadable files."""
     report = CheckReport()
@@ -409,41 +520,23 @@ def check(directory: Path = VECTORS_DIR, spec: bool = True, out=sys.stdout) -> i
     seen: dict[str, str] = {}
     for path in files:
         report.files += 1
-        try:
-            raw = path.read_bytes()
-        except OSError as e:
-            raise VectorFileError(f"cannot read {path}: {e.strerror or e}") from None
+        raw = _read_bytes(path)
         digest = hashlib.sha256(raw).hexdigest()
         if path.name not in manifest:
             problems.append(f"{path.name}: not in {MANIFEST_NAME}")
         elif manifest[path.name] != digest:
             problems.append(f"{path.name}: SHA-256 {digest[:16]}... differs from {MANIFEST_NAME} "
                             f"({str(manifest[path.name])[:16]}...): the file was changed after generation")
-        doc = read_json(path)
-        errors = sorted(validator.iter_errors(doc), key=lambda e: list(map(str, e.absolute_path)))
-        for e in errors[:10]:
-            problems.append(f"{path.name}: schema: {'/'.join(map(str, e.absolute_path)) or '(top)'}: {e.message[:200]}")
-        if len(errors) > 10:
-            problems.append(f"{path.name}: schema: ... and {len(errors) - 10} more")
-        if errors:
+        cases, file_problems = document_cases(parse_json(raw, path), path.name, validator)
+        problems += file_problems
+        if cases is None:
             continue
-        cases = cases_of(doc, path.name)
-        if doc["numberOfTests"] != len(cases):
-            problems.append(f"{path.name}: numberOfTests is {doc['numberOfTests']}, the file has {len(cases)} tests")
-        for case in cases:
-            report.cases += 1
-            if case.id in seen:
-                problems.append(f"{path.name}: id {case.id} also in {seen[case.id]}")
-            seen[case.id] = path.name
-            for f in case.flags:
-                if f.startswith("rule:") and f[5:] not in rules:
-                    problems.append(f"{case.id}: unknown rule {f}")
-                elif not f.startswith("rule:") and f not in errata:
-                    problems.append(f"{case.id}: unknown errata id {f}")
-            if spec:
-                d = spec_difference(case)
-                if d:
-                    problems.append(f"{case.id}: no longer matches the spec: {d}")
+        report.cases += len(cases)
+        problems += case_problems(cases, seen, rules, errata)
+        for case in cases if spec else ():
+            d = spec_difference(case)
+            if d:
+                problems.append(f"{case.id}: no longer matches the spec: {d}")
     shown = problems[:50]
     for p in shown:
         print(f"  FAIL  {p}", file=out)
@@ -471,8 +564,11 @@ def coverage_counts(cases: list[Case]) -> tuple[dict[str, int], dict[str, int]]:
 
 
 def coverage(directory: Path = VECTORS_DIR, out=sys.stdout) -> int:
-    """`osdkc vectors coverage`: cases per rule and errata id; 1 when any has none."""
+    """`osdkc vectors coverage`: cases per rule and errata id, then one table
+    per bug class of osdk_conformance.vector_tables; 1 when a rule or errata
+    entry has no case or a table has a hole."""
     from .spec_rules import RULES
+    from .vector_tables import tables
 
     cases = load_cases(suite_files(directory))
     by_rule, by_errata = coverage_counts(cases)
@@ -483,12 +579,19 @@ def coverage(directory: Path = VECTORS_DIR, out=sys.stdout) -> int:
     for eid, n in by_errata.items():
         summary = ERRATA_SUMMARY.get(eid, "")
         print(f"{eid:<{width}} {n:>6}" + ("   UNPINNED" if not n else f"   {summary[:70]}"), file=out)
+    holes, class_tables = [], tables(cases)
+    for table in class_tables:
+        print("", *table.lines(), sep="\n", file=out)
+        holes += [f"{table.title}: {h}" for h in table.holes]
     unpinned = [k for k, n in {**{f"rule:{r}": n for r, n in by_rule.items()}, **by_errata}.items() if not n]
+    if holes:
+        print(f"vectors coverage: {len(holes)} hole(s): {'; '.join(holes)}", file=out)
     if unpinned:
         print(f"vectors coverage: {len(unpinned)} unpinned: {', '.join(unpinned)}", file=out)
+    if holes or unpinned:
         return 1
-    print(f"vectors coverage: OK, {len(by_rule)} rules and {len(by_errata)} errata entries pinned by "
-          f"{len(cases)} cases", file=out)
+    print(f"vectors coverage: OK, {len(by_rule)} rules and {len(by_errata)} errata entries pinned, no hole in "
+          f"the {len(class_tables)} bug-class tables, {len(cases)} cases", file=out)
     return 0
 
 

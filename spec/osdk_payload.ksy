@@ -48,7 +48,7 @@ seq:
         0x0103: osdk_movement_control
         0x0200: broadcast(profile)
         0x0201: lost_control
-        0x10000: version_ack_value
+        0x10000: version_ack_value(profile)
         0x10001: activation_ack_value
         0x10010: frequency_ack_value
         0x10100: control_ack_value
@@ -72,7 +72,18 @@ types:
         type: u1
         doc: Any value; the flight controller ignores it.
   version_ack_value:
-    doc: ACK of the version query.
+    doc: |
+      ACK of the version query. FW 3.1 firmware (profiles m100-fw3.1 and
+      a3-fw3.1) puts an 11-byte version ID between the CRC and the name;
+      M100 FW 2.3 has none (ERRATA E30).
+    doc-ref:
+      - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout"
+      - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp (CoreAPI::getDroneVersionCallback)
+    params:
+      - id: profile
+        type: u1
+        enum: profile
+        doc: Wire profile of the flight controller; it decides whether the version ID is there.
     seq:
       - id: ack_code
         type: u2
@@ -81,9 +92,17 @@ types:
       - id: version_crc
         type: u4
         doc: CRC of the firmware version.
+      - id: version_id
+        size: 11
+        if: has_version_id
+        doc: Version ID, ASCII, NUL-padded (FW 3.1 only).
       - id: version_name
         size: 32
         doc: Version name, ASCII, NUL-padded.
+    instances:
+      has_version_id:
+        value: profile != profile::m100_fw2_3
+        doc: true on FW 3.1 profiles, whose reply carries the 11-byte version ID.
   activation_request:
     doc: Activation (set 0x00, id 0x01).
     seq:

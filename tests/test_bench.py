@@ -139,7 +139,7 @@ def test_a_count_mismatch_names_the_implementation():
     (("--only", "decode,nosuch"), "unknown section 'nosuch'"),
     (("--impl", "cobol"), "unknown implementation 'cobol'"),
     (("--corpora", "a-day"), "unknown corpus 'a-day'"),
-    (("--repeats", "0"), "--repeats must be at least 1"),
+    (("--repeats", "0"), "argument --repeats: an integer >= 1 was expected, got '0'"),
     (("--input", "/nonexistent/capture.bin", "--profile", "a3-fw3.1"), "cannot read /nonexistent/capture.bin"),
     (("--input", "x.bin"), "--input and --profile go together"),
     (("--markdown", "/nonexistent/dir/out.md"), "--markdown /nonexistent/dir/out.md: directory"),

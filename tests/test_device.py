@@ -122,7 +122,7 @@ def test_every_profile_passes_passive_and_active_with_motion(runs, profile):
                  "active.version", "active.activation", "active.frequency", "active.control_obtain",
                  "active.control_release", "active.movement"):
         assert checks[name][0] == "PASS", (name, checks.get(name))
-    assert "obtain_in_progress then 2 obtained" in checks["active.control_obtain"][1]
+    assert "0x0003 obtain_in_progress then 0x0002 obtained" in checks["active.control_obtain"][1]
     assert "MOVES THE AIRCRAFT" in out
     page = (runs["tmp"] / f"{profile}.html").read_text()
     assert page.count("<svg") == 4 and "Measured rate per item" in page and "CONFORMS" in page

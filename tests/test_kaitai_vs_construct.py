@@ -338,8 +338,10 @@ PAYLOAD_TYPES = [
     *(PayloadType(f"broadcast_{PROFILE_IDS[p]}", 0x02, 0x00, False, _broadcast_body(p), profile=p)
       for p in PROFILES),
     PayloadType("lost_control", 0x02, 0x01, False, _body(fields(reason=u(8)))),
-    PayloadType("version_ack", 0x00, 0x00, True, _body(fields(
-        ack_code=ksy_enum("osdk_payload", "version_ack", 16), version_crc=u(32), version_name=raw(32)))),
+    *(PayloadType(f"version_ack_{PROFILE_IDS[p]}", 0x00, 0x00, True, _body(fields(
+        ack_code=ksy_enum("osdk_payload", "version_ack", 16), version_crc=u(32),
+        **({} if PROFILE_IDS[p] == "m100-fw2.3" else {"version_id": raw(11)}),   # E30
+        version_name=raw(32))), profile=p) for p in PROFILES),
     PayloadType("activation_ack", 0x00, 0x01, True, _body(ack_code("activation_result"))),
     PayloadType("frequency_ack", 0x00, 0x10, True, _body(ack_code("frequency_ack"))),
     PayloadType("control_ack", 0x01, 0x00, True, _body(ack_code("control_ack"))),
@@ -397,7 +399,8 @@ def command_frame(s: Source):
 
 def ack_frame(s: Source):
     profile = _profile(s)
-    value = payload_message(s.choice(ACK_TYPES), s, profile)[1] if s.flag() else b""
+    fits = [t for t in ACK_TYPES if t.profile in (None, profile)]   # a version ACK's layout is the profile's (E30)
+    value = payload_message(s.choice(fits), s, profile)[1] if s.flag() else b""
     value = value or s.binary(48, min_size=1)
     raw = osdk_construct.build_frame(is_ack=True, value=value, session=s.between(1, 31), seq=s.uint(16))
     return (profile,), raw

@@ -44,14 +44,20 @@ def subset(cases, tmp_path: Path, op: str, n: int, name: str = "subset.json") ->
     """A vector file with the first `n` cases of operation `op`, and their ids."""
     chosen = [c for c in cases if c.operation == op][:n]
     assert len(chosen) == n
-    doc = {"suite": "subset", "description": "test subset", "generator": "tests/test_runner.py",
+    path = tmp_path / name
+    write_vectors(chosen, path)
+    return path, [c.id for c in chosen]
+
+
+def write_vectors(chosen, path: Path) -> None:
+    """A vector file holding `chosen` (Case objects), one group each."""
+    n = len(chosen)
+    doc = {"suite": "subset", "description": "test subset", "generator": "tools/gen_vectors.py",
            "numberOfTests": n, "notes": {},
            "testGroups": [{"operation": c.operation, "profile": c.profile, "tests": [{
                "id": c.id, "category": c.category, "comment": c.comment, "input": c.input,
                "result": c.result, "expected": c.expected, "flags": list(c.flags)}]} for c in chosen]}
-    path = tmp_path / name
     path.write_text(json.dumps(doc))
-    return path, [c.id for c in chosen]
 
 
 def junit(path: Path) -> ET.Element:
@@ -222,6 +228,157 @@ def test_usage_errors_exit_2_without_traceback(args, message):
     assert message in proc.stderr and "Traceback" not in proc.stderr
 
 
+# ---- honest verdicts: coverage, validated vectors, interruptions -------------------------
+
+def mixed_vectors(cases, tmp_path: Path, counts: dict[str, int]) -> Path:
+    """A vector file with the first counts[op] cases of each operation."""
+    chosen = [c for op, n in counts.items() for c in [c for c in cases if c.operation == op][:n]]
+    path = tmp_path / "mixed.json"
+    write_vectors(chosen, path)
+    return path
+
+
+@pytest.mark.parametrize("claims", ["nothing", "everything"])
+def test_a_testee_that_runs_nothing_gets_no_verdict(cases, tmp_path, claims):
+    # Claiming no operation, or claiming all and answering `unsupported` to
+    # each: both used to be CONFORMS with exit 0.
+    vec = mixed_vectors(cases, tmp_path, {"classify_control_mode": 3, "decode_frame": 2})
+    xml, page, summary = tmp_path / "r.xml", tmp_path / "r.html", tmp_path / "s.json"
+    cmd = command_for("claims_nothing", *(["--all"] if claims == "everything" else []))
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+                 "--html", str(page), "--summary-json", str(summary))
+    assert proc.returncode == 4, proc.stdout + proc.stderr
+    assert "CONFORMS" not in proc.stdout
+    assert proc.stdout.rstrip().splitlines()[-1].startswith("NOTHING RAN: no verdict (0 of 5 cases ran")
+    why = "operation not claimed" if claims == "nothing" else "answered unsupported"
+    assert f"3 {why}" in proc.stdout and f"2 {why}" in proc.stdout  # the coverage table says why
+    s = json.loads(summary.read_text())
+    assert (s["conforms"], s["complete"], s["verdict"]) == (False, False, "NOTHING RAN")
+    assert s["coverage"]["ran"] == 0 and s["coverage"]["available"] == 5
+    assert "CONFORMS" not in page.read_text() and "NOTHING RAN" in page.read_text()
+    props = {p.get("name"): p.get("value") for p in junit(xml).iter("property")}
+    assert props["coverage"] == "0 of 5 cases ran" and props["verdict"].startswith("NOTHING RAN")
+
+
+def test_a_partial_testee_conforms_only_for_what_ran(cases, tmp_path):
+    vec = mixed_vectors(cases, tmp_path, {"classify_control_mode": 3, "decode_frame": 2})
+    xml, summary = tmp_path / "r.xml", tmp_path / "s.json"
+    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--vectors", str(vec), "--no-progress",
+                 "--junit", str(xml), "--summary-json", str(summary))
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert proc.stdout.rstrip().splitlines()[-1] == "CONFORMS for classify_control_mode: 3 of 5 cases"
+    s = json.loads(summary.read_text())
+    assert (s["conforms"], s["complete"]) == (True, False)
+    rows = {(r["operation"], r["profile"]): (r["ran"], r["available"], r["skipped"]) for r in s["coverage"]["rows"]}
+    frame_profile = next(c.profile for c in cases if c.operation == "decode_frame")
+    assert rows[("decode_frame", frame_profile)] == (0, 2, {"operation not claimed": 2})
+    assert sum(ran for ran, _, _ in rows.values()) == 3
+    props = {p.get("name"): p.get("value") for p in junit(xml).iter("property")}
+    assert props[f"coverage decode_frame {frame_profile}"] == "0 / 2; 2 operation not claimed"
+
+
+def _vector_file_variants(cases, tmp_path: Path) -> dict[str, tuple[list[str], str]]:
+    """Broken vector selections: --vectors arguments and the problem named."""
+    good, _ = subset(cases, tmp_path, "classify_control_mode", 3, "good.json")
+    doc = json.loads(good.read_text())
+    variants = {}
+    maybe = json.loads(json.dumps(doc))
+    maybe["testGroups"][0]["tests"][0]["result"] = "maybe"  # used to count as a pass
+    count = dict(doc, numberOfTests=4)
+    flag = json.loads(json.dumps(doc))
+    flag["testGroups"][1]["tests"][0]["flags"] = ["rule:no.such.rule"]
+    for name, d in (("maybe", maybe), ("count", count), ("flag", flag)):
+        (tmp_path / f"{name}.json").write_text(json.dumps(d))
+    (tmp_path / "copy.json").write_text(good.read_text())
+    (tmp_path / "broken.json").write_text("{not json")
+    return {
+        "result maybe": ([str(tmp_path / "maybe.json")], "'maybe' is not one of"),
+        "numberOfTests": ([str(tmp_path / "count.json")], "numberOfTests is 4, the file has 3 tests"),
+        "unknown flag": ([str(tmp_path / "flag.json")], "unknown rule rule:no.such.rule"),
+        "same file twice": ([str(good), str(good)], "given twice"),  # used to run every case twice
+        "same ids in two files": ([str(good), str(tmp_path / "copy.json")], "also in good.json"),
+        "shipped file twice under two names": ([str(ROOT / "vectors" / "payloads.json"),
+                                               str(_copy(ROOT / "vectors" / "payloads.json", tmp_path))],
+                                              "also in payloads.json"),
+        "not JSON": ([str(tmp_path / "broken.json")], "is not valid JSON"),
+    }
+
+
+def _copy(src: Path, tmp_path: Path) -> Path:
+    dst = tmp_path / "payloads_copy.json"
+    dst.write_bytes(src.read_bytes())
+    return dst
+
+
+@pytest.mark.parametrize("variant", ["result maybe", "numberOfTests", "unknown flag", "same file twice",
+                                     "same ids in two files", "shipped file twice under two names", "not JSON"])
+def test_run_vectors_validates_the_files_like_vectors_check(cases, tmp_path, variant):
+    files, problem = _vector_file_variants(cases, tmp_path)[variant]
+    proc = osdkc("run", "--testee", command_for("claims_nothing"), "--no-progress",
+                 *(a for f in files for a in ("--vectors", f)))
+    assert proc.returncode == 2, proc.stdout + proc.stderr
+    assert problem in proc.stderr and "Traceback" not in proc.stderr
+    assert len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+
+
+def _group_members(pgid: int) -> list[int]:
+    """Live (not zombie) processes of process group `pgid`."""
+    members = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[2]) == pgid and fields[0] != "Z":
+            members.append(int(stat.parent.name))
+    return members
+
+
+@pytest.mark.parametrize("signame", ["SIGINT", "SIGTERM"])
+def test_an_interrupted_run_writes_partial_reports_and_leaves_no_testee(cases, tmp_path, signame):
+    import os
+    import signal
+    import time
+
+    vec, ids = subset(cases, tmp_path, "classify_control_mode", 10)
+    marker = tmp_path / "stalled"
+    xml, page, summary = tmp_path / "r.xml", tmp_path / "r.html", tmp_path / "s.json"
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "osdk_conformance.cli", "run", "--testee", command_for("stalls_after", "4", str(marker)),
+         "--vectors", str(vec), "--timeout", "300", "--no-progress", "--junit", str(xml), "--html", str(page),
+         "--summary-json", str(summary)],
+        cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    pgid = None
+    try:
+        deadline = time.monotonic() + 60
+        while not marker.exists() and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert marker.exists(), proc.communicate(timeout=10)
+        _, pgid, _ = map(int, marker.read_text().split())
+        assert _group_members(pgid)  # the testee and its child, stalled on case 5
+        proc.send_signal(getattr(signal, signame))
+        out, err = proc.communicate(timeout=60)
+        left = _group_members(pgid)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+        if pgid is not None and _group_members(pgid):  # a failing run must not leak them either
+            os.killpg(pgid, signal.SIGKILL)
+    assert left == []  # the testee and its child are gone
+    assert proc.returncode == 128 + getattr(signal, signame), out + err  # the shell's convention: 130, 143
+    assert "Traceback" not in err
+    assert out.rstrip().splitlines()[-1] == f"INTERRUPTED by {signame}: no verdict (4 of 10 cases ran)"
+    assert "6 interrupted" in out  # the coverage table
+    s = json.loads(summary.read_text())
+    assert s["interrupted"] == signame and s["conforms"] is False
+    assert s["statuses"]["pass"] == 4 and s["statuses"]["skip"] == 6
+    root = junit(xml)
+    assert root.get("tests") == "10" and root.get("skipped") == "6" and root.get("failures") == "0"
+    props = {p.get("name"): p.get("value") for p in root.iter("property")}
+    assert props["interrupted"].startswith(f"by {signame}")
+    assert "INTERRUPTED" in page.read_text()
+
+
 # ---- supervision in-process -------------------------------------------------------------
 
 def test_testee_restarts_after_a_failure_and_gives_up_after_five():
@@ -296,18 +453,27 @@ def test_reports_escape_everything():
 
 # ---- the README's example testee ------------------------------------------------------------
 
-def test_the_readme_example_testee_conforms(tmp_path):
+def readme_testee(tmp_path: Path) -> str:
+    """The command of the README's example testee (classify_control_mode only)."""
     readme = (ROOT / "README.md").read_text()
     section = readme[readme.index("## Testing your own implementation"):]
     code = section[section.index("```python\n") + len("```python\n"):section.index("```\n", section.index("```python"))]
     mine = tmp_path / "mine.py"
     mine.write_text(code)
+    return f"{sys.executable} {mine}"
+
+
+def test_the_readme_example_testee_conforms(cases, tmp_path):
     xml = tmp_path / "r.xml"
-    proc = osdkc("run", "--testee", f"{sys.executable} {mine}", "--no-progress", "--junit", str(xml))
+    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--no-progress", "--junit", str(xml))
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-2000:]
     root = junit(xml)
     ran = [tc for tc in root.iter("testcase") if tc.find("skipped") is None]
     assert len(ran) >= 256 * 3 and root.get("failures") == "0"  # every mode byte in every profile
+    # it conforms for what it implements, and says how much that is (the README's comment)
+    mine = sum(c.operation == "classify_control_mode" for c in cases)
+    verdict = proc.stdout.rstrip().splitlines()[-1]
+    assert verdict == f"CONFORMS for classify_control_mode: {mine:,} of {len(cases):,} cases"
 
 
 # ---- the Kaitai testee keeps signalling NaNs bit-exact ---------------------------------------

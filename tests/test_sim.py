@@ -158,3 +158,52 @@ def test_sim_rate_option_is_checked(spec):
     proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "sim", "--rate", spec, "--exit-after", "0.2"],
                           capture_output=True, text=True, timeout=30)
     assert proc.returncode == 2 and "ITEM=HZ" in proc.stderr
+
+
+@pytest.mark.parametrize(("profile", "ack_length"), [("m100-fw2.3", 38), ("m100-fw3.1", 49), ("a3-fw3.1", 49)])
+def test_with_baud_the_first_command_after_open_is_answered(tmp_path, profile, ack_length):
+    """A host that opens the port at the FC's speed and writes at once is heard,
+    as a real UART hears it: the simulator looks at the line speed when bytes
+    arrive, not on a timer. The answer has the profile's version-ACK layout
+    (ERRATA E30: an 11-byte version ID on FW 3.1)."""
+    stats = tmp_path / "stats.json"
+    proc, url = _start("--profile", profile, "--baud", "115200", "--hold", "--stats", str(stats))
+    try:
+        time.sleep(0.3)   # the simulator has seen the port at its default speed before anyone opened it
+        ser = serial.serial_for_url(url, baudrate=115200, timeout=0.05)
+        value = osdk_payload(0, 0, False, profile).build({"body": {"arbitrary": 0}})
+        ack = _exchange(ser, encode(cmd_set=0, cmd_id=0, value=value, session=2, seq=1))
+        ser.close()
+        assert ack is not None and len(ack) == ack_length
+        body = osdk_payload(0, 0, True, profile).parse(ack).body
+        assert bytes(body.version_name).startswith(b"SIM-")
+        assert (body.version_id is None) == (profile == "m100-fw2.3")
+    finally:
+        proc.send_signal(signal.SIGTERM)
+        assert proc.wait(timeout=10) == 0
+    s = json.loads(stats.read_text())
+    assert s["commands_received"] == 1 and s["acks_sent"] == 1
+    assert s["rx_bytes_discarded"] == {"baud_mismatch": 0, "stalled": 0, "not_a_frame": 0}
+
+
+def test_bytes_at_the_wrong_speed_are_counted_not_dropped_silently(tmp_path):
+    stats = tmp_path / "stats.json"
+    proc, url = _start("--baud", "115200", "--hold", "--stats", str(stats))
+    try:
+        ser = serial.serial_for_url(url, baudrate=9600, timeout=0.05)
+        value = osdk_payload(0, 0, False, "a3-fw3.1").build({"body": {"arbitrary": 0}})
+        frame = encode(cmd_set=0, cmd_id=0, value=value, session=2, seq=1)
+        assert _exchange(ser, frame) is None
+        ser.write(b"\x00" * 5)
+        time.sleep(0.3)   # a pty has no line timing: let the simulator read these before the speed changes
+        ser.baudrate = 115200   # stray bytes at the right speed: not frames, counted as such
+        ser.write(b"\x00" * 5)
+        time.sleep(0.3)
+        ser.close()
+    finally:
+        proc.send_signal(signal.SIGTERM)
+        assert proc.wait(timeout=10) == 0
+    s = json.loads(stats.read_text())
+    assert s["commands_received"] == 0
+    assert s["rx_bytes"] == len(frame) + 10
+    assert s["rx_bytes_discarded"] == {"baud_mismatch": len(frame) + 5, "stalled": 0, "not_a_frame": 5}

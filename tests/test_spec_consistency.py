@@ -140,9 +140,22 @@ def _parse_type(ref: str, file_id: str) -> tuple[str, str, list[str]]:
     return m.group(1) or file_id, m.group(2), args
 
 
-def _literal(text: str) -> bool:
-    assert text in ("true", "false"), f"only boolean literal arguments are supported, got {text!r}"
-    return text == "true"
+def _literal(text: str) -> bool | str:
+    """A type argument: a boolean literal, or an enum literal kept as its text."""
+    if text in ("true", "false"):
+        return text == "true"
+    assert re.fullmatch(r"\w+::\w+", text), f"only boolean and enum literal arguments are supported, got {text!r}"
+    return text
+
+
+def _instance_flags(body: dict[str, Any], env: dict[str, Any]) -> dict[str, bool]:
+    """The type's boolean instances of the form `param == enum::x` or `param != enum::x`."""
+    out = {}
+    for name, inst in body.get("instances", {}).items():
+        m = re.fullmatch(r"(\w+) (==|!=) (\w+::\w+)", str(inst.get("value", "")))
+        if m and m.group(1) in env:
+            out[name] = (env[m.group(1)] == m.group(3)) == (m.group(2) == "==")
+    return out
 
 
 def type_size(index: ksy.KsyIndex, file_id: str, type_name: str, args: list[str]) -> int:
@@ -156,10 +169,11 @@ def type_size(index: ksy.KsyIndex, file_id: str, type_name: str, args: list[str]
         file_id, body = type_name, index.files[type_name]
     params = [p["id"] for p in body.get("params", [])]
     assert len(params) == len(args), f"{file_id}::{type_name} takes {params}, got {args}"
-    return seq_size(index, file_id, body["seq"], {p: _literal(a) for p, a in zip(params, args)})
+    env = {p: _literal(a) for p, a in zip(params, args)}
+    return seq_size(index, file_id, body["seq"], {**env, **_instance_flags(body, env)})
 
 
-def field_size(index: ksy.KsyIndex, file_id: str, f: dict[str, Any], env: dict[str, bool]) -> tuple[int, int]:
+def field_size(index: ksy.KsyIndex, file_id: str, f: dict[str, Any], env: dict[str, Any]) -> tuple[int, int]:
     """(bytes, bits) one seq entry occupies; 0 when its `if` is false."""
     cond = f.get("if")
     if cond is not None:
@@ -178,7 +192,7 @@ def field_size(index: ksy.KsyIndex, file_id: str, f: dict[str, Any], env: dict[s
     return type_size(index, *_parse_type(t, file_id)), 0
 
 
-def seq_size(index: ksy.KsyIndex, file_id: str, seq: list[dict[str, Any]], env: dict[str, bool]) -> int:
+def seq_size(index: ksy.KsyIndex, file_id: str, seq: list[dict[str, Any]], env: dict[str, Any]) -> int:
     total, bits = 0, 0
     for f in seq:
         nbytes, nbits = field_size(index, file_id, f, env)
@@ -203,7 +217,9 @@ def test_size_calculator_on_known_types(index: ksy.KsyIndex) -> None:
     assert type_size(index, it, "control_info", ["true"]) == 2
     assert type_size(index, it, "velocity", []) == 13
     assert type_size(index, it, "rtk_detail", []) == 44
-    assert type_size(index, "osdk_payload", "version_ack_value", []) == 38
+    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::m100_fw2_3"]) == 38   # E30
+    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::m100_fw3_1"]) == 49
+    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::a3_fw3_1"]) == 49
     assert type_size(index, "osdk_payload", "activation_request", []) == 44
     assert seq_size(index, "osdk_movement_control", index.files["osdk_movement_control"]["seq"], {}) == 17
 
@@ -334,8 +350,9 @@ def _spec_refs(body: str) -> list[str]:
     return re.findall(r"`([^`]+)`", m.group(1))
 
 
-def test_errata_ids_are_e01_to_e29_in_order() -> None:
-    assert [eid for eid, _, _ in ERRATA] == [f"E{n:02d}" for n in range(1, 30)]
+def test_errata_ids_are_numbered_from_e01_without_gaps() -> None:
+    assert len(ERRATA) >= 30
+    assert [eid for eid, _, _ in ERRATA] == [f"E{n:02d}" for n in range(1, len(ERRATA) + 1)]
 
 
 @pytest.mark.parametrize(("eid", "title", "body"), ERRATA, ids=[e[0] for e in ERRATA])

@@ -73,6 +73,10 @@ def test_vectors_coverage_passes():
     proc = osdkc("vectors", "coverage")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "UNPINNED" not in proc.stdout
+    assert "HOLE" not in proc.stdout and "no hole in the 5 bug-class tables" in proc.stdout
+    for title in ("stream error class", "frame rule pair", "header field bit", "command kind \\ ACK situation",
+                  "mode byte class"):
+        assert "\n" + title in proc.stdout, title
 
 
 def test_coverage_fails_when_something_is_unpinned(tmp_path):
@@ -97,7 +101,7 @@ def test_a_wrong_hand_written_expectation_stops_the_generator():
 
 def test_every_rule_and_errata_entry_is_pinned(cases):
     by_rule, by_errata = coverage_counts(cases)
-    assert set(by_errata) == errata_ids() and len(by_errata) == 29
+    assert set(by_errata) == errata_ids() and len(by_errata) >= 30
     assert [e for e, n in by_errata.items() if not n] == []
     assert [r for r, n in by_rule.items() if not n] == []
     assert set(by_rule) == set(RULES)
@@ -217,6 +221,38 @@ def test_missing_directory_exits_2(tmp_path):
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
 
 
+@pytest.mark.parametrize("old, new", [('"result":"valid"', '"result":"maybe"'),
+                                      ('"numberOfTests": N', '"numberOfTests": N-1'),
+                                      ('"flags":["rule:payload.version_query"]', '"flags":["E99"]')])
+def test_run_vectors_rejects_what_vectors_check_rejects(tmp_path, old, new):
+    """`osdkc run --vectors` and `vectors check` validate with the same code
+    and name the same first problem."""
+    import io
+
+    from osdk_conformance.vectors import VectorFileError, check, load_checked_cases
+
+    d = small_copy(tmp_path)
+    f = d / "payloads.json"
+    if old.endswith("N"):   # the suite's own count, whatever it is today
+        n = json.loads(f.read_text())["numberOfTests"]
+        old, new = old.replace("N", str(n)), new.replace("N-1", str(n - 1))
+    assert old in f.read_text()
+    f.write_text(f.read_text().replace(old, new, 1))
+    write_manifest(d)
+    out = io.StringIO()
+    assert check(d, spec=False, out=out) == 1
+    first = out.getvalue().splitlines()[0].removeprefix("  FAIL  ")
+    with pytest.raises(VectorFileError) as e:
+        load_checked_cases([f])
+    assert first in str(e.value)
+
+
+def test_checked_loading_of_the_shipped_vectors_gives_every_case(cases):
+    from osdk_conformance.vectors import load_checked_cases
+
+    assert load_checked_cases() == cases
+
+
 # ------------------------------------------------------------ compare()
 
 
@@ -235,6 +271,14 @@ def test_compare_valid_is_exact_but_floats_by_bits():
     assert not compare(c, {"ok": False, "error": "truncated_payload", "detail": ""})[0]
     assert compare(c, {"ok": False, "unsupported": True}) == (False, "the testee does not support this case")
     assert not compare(c, "garbage")[0]
+
+
+def test_a_differing_ack_code_is_shown_in_hex_with_its_name():
+    want = {"value": {"ack_code": {"value": 0xFF01, "name": "not_activated"}}}
+    got = {"ok": True, "result": {"value": {"ack_code": {"value": 3, "name": "obtain_in_progress"}}}}
+    passed, reason = compare(case(expected=want), got)
+    assert not passed
+    assert reason == "result.value.ack_code: expected 0xFF01 not_activated, got 0x0003 obtain_in_progress"
 
 
 def test_compare_invalid_and_acceptable():
@@ -301,3 +345,72 @@ def test_every_errata_entry_names_a_vector_that_exists_and_pins_it():
     for entry, case_id in named.items():
         assert case_id in by_id, f"{entry}: no vector {case_id}"
         assert entry in by_id[case_id].flags, f"{entry}: vector {case_id} does not flag {entry}"
+
+
+# ------------------------------------------------------------ bug classes (osdk_conformance.vector_tables)
+
+
+def _gen_vectors():
+    sys.path.insert(0, str(ROOT / "tools"))
+    try:
+        import gen_vectors
+    finally:
+        sys.path.pop(0)
+    return gen_vectors
+
+
+def test_no_bug_class_table_has_a_hole(cases):
+    from osdk_conformance.vector_tables import tables
+
+    holes = {t.title: t.holes for t in tables(cases)}
+    assert holes == {title: [] for title in holes}, holes
+    assert len(holes) == 5
+
+
+@pytest.mark.parametrize("prefix, title", [
+    (".stream_error.", "stream error class"),
+    (".precedence.", "frame rule pair"),
+    (".header_bits.", "header field bit"),
+    (".ack.", "command kind \\ ACK situation"),
+])
+def test_each_table_shows_holes_without_its_cases(cases, prefix, title):
+    """The tables count what the bytes exercise: without the cases generated
+    for a class, its table has holes again (as it had before they existed)."""
+    from osdk_conformance.vector_tables import tables
+
+    rest = [c for c in cases if prefix not in c.id]
+    assert len(rest) < len(cases)
+    table = next(t for t in tables(rest) if t.title == title)
+    assert table.holes, title
+
+
+def test_movement_precedence_holes_without_its_cases(cases):
+    from osdk_conformance.vector_tables import movement_table
+
+    rest = [c for c in cases if c.operation == "check_movement_control" and ".precedence." not in c.id]
+    assert set(movement_table(rest).holes) >= {"invalid x length + mode", "documented x length + range"}
+
+
+def test_broken_rules_judges_each_rule_on_its_own():
+    """Each breaker of the generator breaks its rule, and in a stream nothing else."""
+    from osdk_conformance.vector_tables import FRAME_RULES, broken_rules
+
+    gen = _gen_vectors()
+    for rule in FRAME_RULES:
+        for tag, breaker in gen.BREAKERS[rule.name].items():
+            data = gen.broken_frame([breaker])
+            assert rule.name in broken_rules(data, "a3-fw3.1", "decode_frame"), (rule.name, tag)
+            if "decode_stream" in rule.contexts:
+                assert broken_rules(data, "a3-fw3.1", "decode_stream") == {rule.name}, (rule.name, tag)
+    assert set(gen.BREAKERS) == {r.name for r in FRAME_RULES}
+    assert broken_rules(gen.GOOD_FRAME, "a3-fw3.1", "decode_frame") == set()
+
+
+def test_every_stream_error_class_is_produced_in_a_stream(cases):
+    from osdk_conformance.vector_tables import NOT_IN_STREAMS, frame_error_classes, stream_error_classes
+
+    assert {"bad_crc16", "bad_crc32", "truncated_frame", "bad_session", "length_mismatch"} <= set(stream_error_classes())
+    assert set(frame_error_classes()) == set(stream_error_classes()) | (set(NOT_IN_STREAMS) & set(frame_error_classes()))
+    seen = {ev["error"] for c in cases if c.operation == "decode_stream" and c.result == "valid"
+            for ev in c.expected["events"] if ev["kind"] == "error"}
+    assert seen == set(stream_error_classes())

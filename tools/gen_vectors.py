@@ -37,7 +37,9 @@ from typing import Any, Callable
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from osdk_conformance import model, reference  # noqa: E402
+from osdk_construct.payload import VERSION_ID_SIZE, has_version_id  # noqa: E402
+from osdk_conformance import model, reference, vectors  # noqa: E402
+from osdk_conformance import vector_tables as vt  # noqa: E402
 from osdk_conformance.crc import crc16, crc32  # noqa: E402
 from osdk_conformance.rules import classify_control_mode, default_rules, input_ranges, profile as rules_profile  # noqa: E402
 from osdk_conformance.spec_rules import RULES, rule_flag  # noqa: E402
@@ -482,6 +484,7 @@ def gen_control_ranges() -> Suite:
                           f"{reference.AXIS_RANGE[a]} range {ranges[reference.AXIS_RANGE[a]].get('min')}.."
                           f"{ranges[reference.AXIS_RANGE[a]].get('max')}",
                           {"hex": mc_hex(byte, *vals.values())}, flags)
+        add_movement_precedence(s, profile)
     # ERRATA E15, written by hand: 0x41 (velocity, yaw angle, bit 0 set) is the
     # stable flag on FW 3.1 but a body yaw frame with yaw angle on FW 2.3.
     s.add("check_movement_control", "m100-fw2.3", "control_ranges.m100-fw2.3.e15_yaw_angle_body_frame",
@@ -849,17 +852,31 @@ def gen_payloads() -> Suite:
         add("version_query.two_bytes", 0, 0, False, b"\x00\x00", "get version with two bytes: length_mismatch",
             R("payload.version_query", "payload.trailing"), error="length_mismatch")
         name_bytes = b"SDK-v1.0 BETA M100-03.01.10.00".ljust(32, b"\x00")
+        # FW 3.1 puts an 11-byte version ID between the CRC and the name, FW 2.3 none (E30)
+        id_bytes = b"" if profile == "m100-fw2.3" else b"01.00.0100".ljust(11, b"\x00")
         for code, cname in ((0x0000, "activated"), (0xFF01, "not_activated"), (0x0001, None)):
-            data = struct.pack("<HI", code, 0x12345678) + name_bytes
+            data = struct.pack("<HI", code, 0x12345678) + id_bytes + name_bytes
             kw = {}
             if code == 0x0000:
                 kw["expected"] = {"value": {"ack_code": enum(0, "activated"), "version_crc": 0x12345678,
+                                            **({"version_id": id_bytes.hex()} if id_bytes else {}),
                                             "version_name": name_bytes.hex()}}
             add(f"version_ack.0x{code:04x}", 0, 0, True, data,
-                f"version ACK, code 0x{code:04x} ({cname or 'no name'}), CRC 0x12345678, a NUL-padded 32-byte name"
-                + ("; hand-written" if kw else ""),
-                R("payload.version_ack") + (R("enums.unnamed") if cname is None else []), **kw)
-        lengths("version_ack", 0, 0, True, struct.pack("<HI", 0, 1) + name_bytes, "payload.version_ack", [])
+                f"version ACK, code 0x{code:04x} ({cname or 'no name'}), CRC 0x12345678, "
+                + ("a NUL-padded 11-byte version ID, " if id_bytes else "no version ID (FW 2.3), ")
+                + "a NUL-padded 32-byte name" + ("; hand-written" if kw else ""),
+                R("payload.version_ack") + ["E30"] + (R("enums.unnamed") if cname is None else []), **kw)
+        lengths("version_ack", 0, 0, True, struct.pack("<HI", 0, 1) + id_bytes + name_bytes, "payload.version_ack",
+                ["E30"])
+        if id_bytes:
+            add("version_ack.fw2_3_layout", 0, 0, True, struct.pack("<HI", 0, 1) + name_bytes,
+                "the FW 2.3 version ACK (no version ID, 38 bytes) in a FW 3.1 profile: 11 bytes short, "
+                "truncated_payload", R("payload.version_ack", "payload.truncated") + ["E30"], error="truncated_payload")
+        else:
+            add("version_ack.fw3_1_layout", 0, 0, True,
+                struct.pack("<HI", 0, 1) + b"01.00.0100".ljust(11, b"\x00") + name_bytes,
+                "the FW 3.1 version ACK (11-byte version ID, 49 bytes) in the FW 2.3 profile: 11 bytes too many, "
+                "length_mismatch", R("payload.version_ack", "payload.trailing") + ["E30"], error="length_mismatch")
         # activation
         for prof_name, version in (("m100-fw2.3", 0x02030A00), ("m100-fw3.1", 0x03010A00), ("a3-fw3.1", 0x03016400)):
             data = struct.pack("<III", 1012345, 2, version) + b"12345678901234567890123456789012"
@@ -870,7 +887,7 @@ def gen_payloads() -> Suite:
             add(f"activation_request.{prof_name}", 0, 1, False, data,
                 f"activation with app id 1012345, API level 2 at offset 4, SDK version 0x{version:08x} ({prof_name}), "
                 f"32-byte bundle id (44 bytes)" + ("; hand-written" if kw else ""),
-                R("payload.activation_request") + ["E12"], **kw)
+                R("payload.activation_request") + ["E12", "E31"], **kw)
         data40 = struct.pack("<II", 1012345, 0x03010A00) + b"1" * 32
         add("activation_request.forty_bytes", 0, 1, False, data40,
             "the 40-byte activation of a client that left out the API level word: truncated_payload",
@@ -892,7 +909,7 @@ def gen_payloads() -> Suite:
         data = bytes(defaults + [0] * (16 - len(defaults)))
         add("frequency_request.default_rates", 0, 0x10, False, data,
             f"set frequency to the default rates of {profile} (ERRATA E10), reserved tail zero",
-            R("payload.frequency_request") + ["E10", "E11"])
+            R("payload.frequency_request") + ["E10", "E11", "E31"])
         add("frequency_request.reserved_tail", 0, 0x10, False, bytes([5] * 12 + [1, 2, 3, 4]),
             "set frequency, keep everything, non-zero tail bytes: reported by rules, decoded here",
             R("payload.frequency_request") + ["E11"])
@@ -904,14 +921,14 @@ def gen_payloads() -> Suite:
         # control authority
         for b in (0, 1, 2):
             add(f"control_request.{b}", 1, 0, False, bytes([b]), f"control request {b}",
-                R("payload.control_request") + (R("enums.unnamed") if b > 1 else []))
+                R("payload.control_request") + (R("enums.unnamed") if b > 1 else ["E31"]))
         lengths("control_request", 1, 0, False, b"\x01", "payload.control_request", [])
         names = {0: "rc_not_in_f_mode", 1: "released", 2: "obtained", 3: "obtain_in_progress", 4: "release_in_progress",
                  0xC9: "in_ioc_mode"}
         for code in (0, 1, 2, 3, 4, 5, 6, 0xC9, 0xFFFF):
             add(f"control_ack.0x{code:04x}", 1, 0, True, le16(code),
                 f"control ACK 0x{code:04x}: {names.get(code) or 'no name (5 and 6 are SDK-local, never on the wire)'}"
-                "; hand-written", R("payload.control_ack") + ["E26"] + (R("enums.unnamed") if code not in names else []),
+                "; hand-written", R("payload.control_ack") + ["E26", "E31"] + (R("enums.unnamed") if code not in names else []),
                 expected={"value": {"ack_code": enum(code, names.get(code))}})
         lengths("control_ack", 1, 0, True, le16(2), "payload.control_ack", ["E26"])
         # movement control as a payload: any mode byte parses
@@ -920,13 +937,15 @@ def gen_payloads() -> Suite:
             add(f"movement_control.0x{byte:02x}", 1, 3, False, data,
                 f"movement control value with mode byte 0x{byte:02x}: the layout parses any byte (unnamed fields "
                 f"have name null); check_movement_control judges it", R("payload.movement_control", "control.fields")
-                + (R("enums.unnamed") if byte == 0xFF else []))
+                + (R("enums.unnamed") if byte == 0xFF else []) + (["E31"] if byte == 0x4B else []))
         lengths("movement_control", 1, 3, False, bytes(17), "payload.movement_control", [])
         # lost control and its ACK (E24)
-        add("lost_control.0x04", 2, 1, False, b"\x04", "lost control authority, reason 0x04", R("payload.lost_control"))
+        add("lost_control.0x04", 2, 1, False, b"\x04", "lost control authority, reason 0x04",
+            R("payload.lost_control") + ["E31"])
         lengths("lost_control", 2, 1, False, b"\x04", "payload.lost_control", [])
         add("lost_control_ack.zero", 2, 1, True, b"\x00\x00",
-            "the device's 2-byte zero answer to a lost-control push in session > 0", R("payload.lost_control_ack") + ["E24"])
+            "the device's 2-byte zero answer to a lost-control push in session > 0",
+            R("payload.lost_control_ack") + ["E24", "E31"])
         lengths("lost_control_ack", 2, 1, True, b"\x00\x00", "payload.lost_control_ack", ["E24"])
         # unknown commands and ACKs: raw
         for (cs, ci, ack, n) in ((0x00, 0x02, False, 5), (0x01, 0x01, False, 0), (0x01, 0x03, True, 2),
@@ -1115,6 +1134,8 @@ def gen_frames() -> Suite:
             add(f"extra.{len(extra)}.{extra[:1].hex()}", "frame.extra_bytes",
                 f"the movement frame followed by {len(extra)} more byte(s): length_mismatch", move + extra,
                 R("frame.extra_bytes"), error="length_mismatch")
+        add_rule_pairs(s, profile, "decode_frame", "precedence", add)
+        add_header_bits(s, profile, add, stream=False)
     return s
 
 
@@ -1215,9 +1236,10 @@ def gen_streams() -> Suite:
         add("ack.other_seq", "stream.ack", "an ACK whose SEQ matches no command: raw", cmd +
             frame_bytes(is_ack=True, value=b"\x03\x00\x00", session=2, seq=41), R("stream.ack_match"))
         vq = frame_bytes(cmd_set=0, cmd_id=0, value=b"\x00", session=1, seq=77)
-        vack = frame_bytes(is_ack=True, session=1, seq=77, value=struct.pack("<HI", 0xFF01, 7) + bytes(32))
+        vack = frame_bytes(is_ack=True, session=1, seq=77, value=struct.pack("<HI", 0xFF01, 7)
+                           + bytes(0 if profile == "m100-fw2.3" else 11) + bytes(32))
         add("ack.session1_version", "stream.ack", "get version in session 1 and its ACK (not_activated): matched",
-            vq + vack, R("stream.ack_match", "payload.version_ack") + ["E24"])
+            vq + vack, R("stream.ack_match", "payload.version_ack") + ["E24", "E30"])
         lc = frame_bytes(cmd_set=2, cmd_id=1, value=b"\x04", session=3, seq=5)
         lack = frame_bytes(is_ack=True, session=3, seq=5, value=b"\x00\x00")
         add("ack.lost_control", "stream.ack", "a lost-control push in session 3 and the device's 2-byte zero ACK",
@@ -1226,6 +1248,7 @@ def gen_streams() -> Suite:
         add("ack.session0_command", "stream.ack", "a movement command in session 0 wants no ACK; a later ACK with "
             "session 1 and the same SEQ is not matched", mc0 + frame_bytes(is_ack=True, session=1, seq=6, value=b"\x00"),
             R("stream.ack_match", "frame.session"))
+        add_ack_memory(add, profile)
         # a random mix
         for k in range(3):
             parts = []
@@ -1249,6 +1272,10 @@ def gen_streams() -> Suite:
                 left -= sizes[-1]
             add(f"mix.{k}", "stream.mix", f"random mix #{k} of frames, corrupted frames and noise, random read sizes",
                 data, R("stream.resync", "stream.chunking"), chunks=sizes)
+        add_stream_errors(s, profile, add)
+        add_rule_pairs(s, profile, "decode_stream", "precedence", add)
+        add_header_bits(s, profile, add, stream=True)
+        add_ack_situations(s, profile)
     return s
 
 
@@ -1330,6 +1357,10 @@ def gen_encode() -> Suite:
     fr("encode.frame.too_long_ack", "encode.frame", "an ACK with a 1008-byte value: impossible_length",
        {"is_ack": True, "session": 1, "seq": 1, "value": bytes(1008).hex()}, R("encode.frame", "frame.len") + ["E22"],
        error="impossible_length")
+    fr("encode.frame.too_long_ack_session0", "encode.frame", "an ACK in session 0 with a 1008-byte value breaks "
+       "two rules: the length is checked first, impossible_length", {"is_ack": True, "session": 0, "seq": 1,
+                                                                       "value": bytes(1008).hex()},
+       R("encode.frame", "frame.len", "frame.session") + ["E22", "E24"], error="impossible_length")
     fr("encode.frame.seq_max", "encode.frame", "SEQ 0xFFFF, session 31",
        {"cmd_set": 1, "cmd_id": 0, "is_ack": False, "session": 31, "seq": 0xFFFF, "value": "01"},
        R("encode.frame", "frame.session"))
@@ -1343,6 +1374,402 @@ def gen_encode() -> Suite:
         fr(f"encode.frame.random.{k}", "encode.frame", f"random {'ACK' if is_ack else 'command'} frame #{k}", inp,
            R("encode.frame", "frame.crc16", "frame.crc32"))
     return s
+
+
+# ============================================================== bug classes (osdk_conformance.vector_tables)
+#
+# The classes of bugs an independent implementation could otherwise get
+# wrong and still pass: each is generated from the lists of
+# osdk_conformance.vector_tables (every frame error class, every pair of
+# frame rules, every header bit, every command kind and ACK situation,
+# every undefined mode byte), and `osdkc vectors coverage` shows a table
+# per class computed from the vectors' bytes.
+
+GOOD_FRAME = frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", seq=0x0203)
+"""A small valid frame (control request, session 0) placed after or inside bad ones."""
+
+
+def reseal(data: bytes) -> bytes:
+    """Both CRCs recomputed over what is there, after a byte was edited."""
+    b = bytearray(data)
+    b[10:12] = le16(crc16(bytes(b[:10])))
+    if len(b) > 12:
+        b[-4:] = struct.pack("<I", crc32(bytes(b[:-4])))
+    return bytes(b)
+
+
+def flip_last(data: bytes) -> bytes:
+    return data[:-1] + bytes([data[-1] ^ 0x01])
+
+
+def crc16_wrong(data: bytes) -> bytes:
+    """A bit of the stored CRC-16 flipped, the CRC-32 still right for the bytes."""
+    b = flip(data, 80)
+    return b[:-4] + struct.pack("<I", crc32(b[:-4])) if len(b) > 12 else b
+
+
+PAIR_BASE = {"cmd_set": 1, "cmd_id": 0, "value": b"\x01", "session": 2, "seq": 0x0102}
+"""The frame every pair of broken rules starts from: a control request in session 2."""
+
+# How each rule of vt.FRAME_RULES is broken, in every way that takes a
+# different path through a decoder (variant tag -> header values for
+# frame_bytes, and an edit of the finished bytes at a stage: 0 before both
+# CRCs are recomputed, 1 after, 2 last).
+Breaker = tuple[dict, int, Callable[[bytes], bytes] | None]
+BREAKERS: dict[str, dict[str, Breaker]] = {
+    "sof": {"": ({}, 0, lambda d: b"\x55" + d[1:])},
+    "crc16": {"": ({}, 1, crc16_wrong)},
+    "ver": {"": ({"ver": 1}, 0, None)},
+    "res0": {"": ({"res0": 1}, 0, None)},
+    "res1": {"": ({"res1": 0x000001}, 0, None)},  # its lowest bit alone: a decoder reading ENC one bit wide sees 0
+    "len": {"below12": ({"length": 3}, 0, None), "13to16": ({"length": 14}, 0, None)},
+    "size": {"extra": ({}, 2, lambda d: d + b"\x00"), "short": ({}, 2, lambda d: d[:-1])},
+    "crc32": {"": ({}, 1, flip_last)},
+    "session": {"": ({"is_ack": True, "session": 0, "cmd_set": None, "cmd_id": None, "value": b"\x02\x00"}, 0, None)},
+    # plain DATA with padding (the value is still decoded), an undefined ENC, AES without padding
+    "enc": {"plain_padding": ({"padding": 1}, 0, None), "enc2": ({"enc": 2}, 0, None),
+            "aes_padding0": ({"enc": 1}, 0, None)},
+    "value": {"trailing": ({"value": b"\x01\x00"}, 0, None), "short": ({"value": b""}, 0, None)},
+}
+RULE_FLAGS = {"sof": "frame.sof", "crc16": "frame.crc16", "ver": "frame.ver", "res0": "frame.reserved",
+              "res1": "frame.reserved", "len": "frame.len", "size": "frame.extra_bytes", "crc32": "frame.crc32",
+              "session": "frame.session", "enc": "frame.enc", "value": "payload.trailing",
+              "size-short": "frame.truncation", "value-short": "payload.truncated"}
+"""The rule flag of each breaker ("rule" or "rule-variant")."""
+
+
+def broken_frame(breakers: list[Breaker]) -> bytes | None:
+    """PAIR_BASE with every breaker applied, or None when two of them need
+    the same header value to differ."""
+    wanted: dict[str, Any] = {}
+    for fields, _, _ in breakers:
+        for k, v in fields.items():
+            if k in wanted and wanted[k] != v:
+                return None
+            wanted[k] = v
+    data = frame_bytes(**{**PAIR_BASE, **wanted})
+    for stage in (0, 1, 2):
+        edits = [edit for _, at, edit in breakers if at == stage and edit]
+        for edit in edits:
+            data = edit(data)
+        if stage == 0 and edits:
+            data = reseal(data)
+    return data
+
+
+def first_rule(broken: set[str], context: str) -> vt.FrameRule:
+    return next(r for r in vt.FRAME_RULES if r.name in broken and context in r.contexts)
+
+
+def variant_pairs(a: str, b: str, profile: str, context: str) -> list[tuple[str, bytes, set[str], list[str]]]:
+    """(id part, frame bytes, rules it breaks, rule flags) for every way of
+    breaking both a and b together; GenerationError when there is none."""
+    out = []
+    for ta, ba in BREAKERS[a].items():
+        for tb, bb in BREAKERS[b].items():
+            data = broken_frame([ba, bb])
+            broken = vt.broken_rules(data, profile, context) if data else set()
+            if {a, b} <= broken:
+                names = [f"{n}-{t}" if t else n for n, t in ((a, ta), (b, tb))]
+                flags = R(*{RULE_FLAGS.get(name, RULE_FLAGS[name.split("-")[0]]) for name in names})
+                out.append((".".join(names), data, broken, flags))
+    if not out:
+        raise GenerationError(f"rules {a} and {b} cannot be broken together; list the pair in "
+                              f"vector_tables.IMPOSSIBLE_PAIRS with the reason")
+    return out
+
+
+def add_rule_pairs(s: Suite, profile: str, context: str, prefix: str,
+                   add: Callable[..., None]) -> None:
+    """One case per pair of frame rules that can fire on one frame
+    (vt.rule_pairs) and per way of breaking each: the frame alone
+    (decode_frame) or followed by GOOD_FRAME (decode_stream)."""
+    for a, b in vt.rule_pairs(context):
+        for name, data, broken, flags in variant_pairs(a, b, profile, context):
+            add_rule_pair(profile, context, f"{prefix}.{name}", a, b, data, broken, flags, add)
+
+
+def add_rule_pair(profile: str, context: str, id: str, a: str, b: str, data: bytes, broken: set[str],
+                  flags: list[str], add: Callable[..., None]) -> None:
+    first = first_rule(broken, context)
+    also = sorted(broken - {a, b}, key=[r.name for r in vt.FRAME_RULES].index)
+    what = f"{a} and {b} broken on one frame{' (and ' + ', '.join(also) + ')' if also else ''}"
+    if context == "decode_frame":
+        ref = reference.answer("decode_frame", profile, {"hex": data.hex()})
+        if ref["ok"] or ref["error"] not in first.classes:
+            raise GenerationError(f"{id}: the reference answers {ref}, precedence says {first.name}")
+        add(id, "frame.precedence", f"{what}: {first.name} comes first, {ref['error']}", data, flags,
+            error=ref["error"])
+        return
+    events = reference.answer("decode_stream", profile, {"hex": (data + GOOD_FRAME).hex(),
+                                                         "chunks": [len(data) + len(GOOD_FRAME)]})
+    ev = events["result"]["events"][0]
+    if ev["kind"] != "error" or ev["offset"] != 0 or ev["error"] not in first.classes:
+        raise GenerationError(f"{id} in a stream: first event {ev}, precedence says {first.name}")
+    add(id, "stream.precedence", f"{what}, then a good frame: {first.name} comes first ({ev['error']} covering "
+        f"{ev['length']} byte(s)), and scanning resumes where that class says", data + GOOD_FRAME,
+        flags + R("stream.resync"))
+
+
+def stream_error_makers() -> dict[str, tuple[str, Callable[[bytes], bytes]]]:
+    """A bad frame per way of producing each stream error class:
+    name -> (class, make(inner)), `inner` carried inside the frame's DATA."""
+
+    def unknown(inner: bytes, **kw: Any) -> bytes:
+        return frame_bytes(cmd_set=0, cmd_id=0x7E, value=b"\x11" + inner + b"\x22", seq=0x0405, **kw)
+
+    return {
+        "crc16": ("bad_crc16", lambda inner: flip(unknown(inner), 80)),
+        "ver": ("bad_version", lambda inner: unknown(inner, ver=1)),
+        "res0": ("reserved_bits", lambda inner: unknown(inner, res0=1)),
+        "res1": ("reserved_bits", lambda inner: unknown(inner, res1=0x000001)),
+        "len3": ("impossible_length", lambda inner: frame_bytes(length=3, data=b"") + b"\x11" + inner),
+        "len14": ("impossible_length", lambda inner: frame_bytes(length=14, data=b"") + b"\x11" + inner),
+        "crc32": ("bad_crc32", lambda inner: flip_last(unknown(inner))),
+        "truncated": ("truncated_frame", lambda inner: unknown(inner + bytes(24))[:15 + len(inner)]),
+        "session": ("bad_session", lambda inner: frame_bytes(is_ack=True, session=0, seq=0x0405,
+                                                             value=b"\x02\x00" + inner)),
+        "enc": ("bad_encryption", lambda inner: unknown(inner, enc=2)),
+        "padding": ("bad_encryption", lambda inner: unknown(inner, padding=1)),
+        "activation_short": ("truncated_payload", lambda inner: frame_bytes(cmd_set=0, cmd_id=1, seq=0x0405,
+                                                                             value=inner + b"\x00")),
+        "control_trailing": ("length_mismatch", lambda inner: frame_bytes(cmd_set=1, cmd_id=0, seq=0x0405,
+                                                                           value=b"\x01\x22" + inner)),
+        "broadcast_reserved": ("reserved_bits", lambda inner: frame_bytes(cmd_set=2, cmd_id=0, seq=0x0405,
+                                                                           value=le16(0x8000) + inner)),
+    }
+
+
+STREAM_ERROR_FLAGS = {"bad_crc16": "frame.crc16", "bad_version": "frame.ver", "impossible_length": "frame.len",
+                      "bad_crc32": "frame.crc32", "truncated_frame": "stream.truncated_tail",
+                      "bad_session": "frame.session", "bad_encryption": "frame.enc",
+                      "truncated_payload": "payload.truncated", "length_mismatch": "payload.trailing"}
+
+
+def add_stream_errors(s: Suite, profile: str, add: Callable[..., None]) -> None:
+    """Every stream error class (vt.stream_error_classes), each way of
+    producing it: the bad frame then a good one; with a good frame inside
+    its DATA as well (found only where scanning resumes after the start
+    byte); and that one fed a byte at a time."""
+    makers = stream_error_makers()
+    missing = set(vt.stream_error_classes()) - {cls for cls, _ in makers.values()}
+    if missing:
+        raise GenerationError(f"no stream error vector produces {', '.join(sorted(missing))}")
+    for name, (cls, make) in makers.items():
+        flags = R("stream.resync", STREAM_ERROR_FLAGS.get(cls) or
+                  ("broadcast.reserved_flags" if name.startswith("broadcast") else "frame.reserved"))
+        for shape, data, chunks, what in (
+                ("then_good", make(b"") + GOOD_FRAME, None, "then a good frame"),
+                ("hidden", make(GOOD_FRAME) + GOOD_FRAME, None,
+                 "with a good frame inside its DATA, then the same good frame"),
+                ("hidden.bytewise", make(GOOD_FRAME) + GOOD_FRAME, [1] * (len(make(GOOD_FRAME)) + len(GOOD_FRAME)),
+                 "with a good frame inside its DATA, then the same good frame, one byte per read")):
+            ref = reference.answer("decode_stream", profile, {"hex": data.hex(), "chunks": [len(data)]})
+            ev = ref["result"]["events"][0]
+            if ev["kind"] != "error" or ev["offset"] != 0 or ev["error"] != cls:
+                raise GenerationError(f"stream error {name}: first event {ev}, want {cls} at 0")
+            resumes = "after its start byte" if ev["length"] < len(make(b"")) or cls in (
+                "bad_crc32", "truncated_frame") else "after the frame"
+            add(f"stream_error.{name}.{shape}", "stream.error_classes",
+                f"{cls} ({name}) {what}: the error at offset 0 covers {ev['length']} byte(s) and scanning "
+                f"resumes {resumes}", data, flags + (R("stream.chunking") if chunks else []), chunks=chunks)
+
+
+def header_bit_frames(field: str, k: int) -> list[tuple[str, dict]]:
+    """Valid frames with bit k of a header field set (or, for LEN, also
+    every other bit set), as frame_bytes arguments; [] for a field whose
+    bits only appear in invalid frames, which the frames suite already has
+    for every value (VER, RES0, ENC 2..7) or which are set here (RES1)."""
+    if field == "len":
+        out = []
+        for tag, length in (("set", 17 | 1 << k), ("all_but", 0x3FF & ~(1 << k))):
+            if length == 17:  # the one DATA byte of a LEN 17 frame is an ACK's value
+                out.append((tag, {"is_ack": True, "session": 1, "value": b"\x00", "seq": 0x0607}))
+            else:
+                out.append((tag, {"cmd_set": 0, "cmd_id": 0x7F, "value": bytes(length - 18), "seq": 0x0607}))
+        return out
+    if field == "session":
+        return [("command", {"cmd_set": 1, "cmd_id": 0, "value": b"\x01", "session": 1 << k, "seq": 0x0607}),
+                ("ack", {"is_ack": True, "value": b"\x02\x00", "session": 1 << k, "seq": 0x0607})]
+    if field == "padding":
+        return [("aes", {"data": bytes(range(32)), "enc": 1, "padding": 1 << k, "seq": 0x0607})]
+    if field == "seq":
+        return [("command", {"cmd_set": 1, "cmd_id": 0, "value": b"\x01", "seq": 1 << k})]
+    if field == "res1":
+        return [("set", {"cmd_set": 1, "cmd_id": 0, "value": b"\x01", "res1": 1 << k})]
+    return []
+
+
+def add_header_bits(s: Suite, profile: str, add: Callable[..., None], stream: bool) -> None:
+    """Every bit of every header field (vt.header_bits, from the spec's
+    layout) set in a frame: a decoder that reads a field one bit too wide,
+    too narrow or shifted misreads these. In streams, LEN bits only (LEN
+    decides where the next frame starts), each frame followed by a good one."""
+    for field, k, pos in vt.header_bits():
+        if stream and field != "len":
+            continue
+        for tag, kw in header_bit_frames(field, k):
+            if stream and tag != "set":
+                continue
+            data = frame_bytes(**kw)
+            if bool(data[pos // 8] >> (pos % 8) & 1) != (tag != "all_but"):
+                raise GenerationError(f"header bit {field}.{k} is not as {tag} says in its frame")
+            value = kw.get("res1") or kw.get("session") or kw.get("padding") or kw.get("seq")
+            what = {"set": f"LEN {len(data)} (bit {k} set)", "all_but": f"LEN {len(data)} (every bit but {k} set)"}.get(
+                tag, f"{field} {value} (bit {k} set), {tag}" if field != "res1" else f"RES1 0x{value:06x}")
+            flags = R({"len": "frame.len", "session": "frame.session", "padding": "frame.enc", "seq": "frame.data",
+                       "res1": "frame.reserved"}[field])
+            if stream:
+                add(f"header_bits.{field}.bit{k}", "stream.header_bits",
+                    f"a frame with {what}, then a good frame: LEN decides where the next frame starts",
+                    data + GOOD_FRAME, flags + R("stream.resync"))
+            else:
+                add(f"header_bits.{field}.bit{k}.{tag}", "frame.header_bits",
+                    f"header bit {pos} (byte {pos // 8}, bit {pos % 8}) is bit {k} of {field}: {what}",
+                    data, flags)
+
+
+COMMAND_VALUES: dict[str, tuple[tuple[int, int], bytes, bytes | None, bytes]] = {
+    # kind: ((set, id), a command value, one that does not decode, an ACK value)
+    "version_query": ((0x00, 0x00), b"\x00", b"", struct.pack("<HI", 0, 7) + bytes(32)),
+    "activation": ((0x00, 0x01), struct.pack("<III", 1012345, 2, 0x03010A00) + bytes(32), bytes(40), le16(0)),
+    "set_frequency": ((0x00, 0x10), bytes(range(8)) + bytes(8), bytes(15), le16(0)),
+    "control_authority": ((0x01, 0x00), b"\x01", b"\x01\x00", le16(2)),
+    "movement_control": ((0x01, 0x03), bytes.fromhex("4b0000803f000000c00000003f0000f041"), bytes(16), b"\x00"),
+    "broadcast": ((0x02, 0x00), b"\x00\x00", b"\x00", b"\x00\x01"),
+    "lost_control": ((0x02, 0x01), b"\x04", b"", le16(0)),
+    "unknown": ((0x05, 0x01), b"\x10\x20", None, b"\x30"),
+}
+
+
+def command_values(kind: str, profile: str) -> tuple[tuple[int, int], bytes, bytes | None, bytes]:
+    """COMMAND_VALUES[kind], with the version ACK in the profile's layout (ERRATA E30)."""
+    key, value, bad, ack_value = COMMAND_VALUES[kind]
+    if kind == "version_query" and has_version_id(profile):
+        ack_value = ack_value[:6] + bytes(VERSION_ID_SIZE) + ack_value[6:]
+    return key, value, bad, ack_value
+
+
+def ack_situation_streams(kind: str, other: str, profile: str) -> dict[str, bytes]:
+    """The stream of each vt.ACK_SITUATIONS entry for a command kind
+    (`other`: a second kind, for the situations with two commands)."""
+    (cs, ci), value, bad, ack_value = command_values(kind, profile)
+    (ocs, oci), ovalue, _, oack = command_values(other, profile)
+    n = 0x0A0B
+
+    def cmd(session: int = 2, seq: int = n, v: bytes = value, c: tuple[int, int] = (cs, ci)) -> bytes:
+        return frame_bytes(cmd_set=c[0], cmd_id=c[1], value=v, session=session, seq=seq)
+
+    def ack(session: int = 2, seq: int = n, v: bytes = ack_value) -> bytes:
+        return frame_bytes(is_ack=True, session=session, seq=seq, value=v)
+
+    out = {
+        "matched": cmd() + ack(),
+        "matched_session1": cmd(session=1) + ack(session=1),
+        "matched_bad_value": cmd() + ack(v=ack_value + b"\x00"),
+        "repeated_ack": cmd() + ack() + ack(),
+        "ack_before_command": ack() + cmd(),
+        "other_session": cmd() + ack(session=3),
+        "other_seq": cmd() + ack(seq=n + 1),
+        "session0_command": cmd(session=0) + ack(session=1),
+        "rejected_command": cmd(v=bad or b"") + ack(),
+        "retransmitted_command": cmd() + cmd() + ack() + ack(),
+        "replaced_command": cmd(v=ovalue, c=(ocs, oci)) + cmd() + ack(),
+        "interleaved": cmd(v=ovalue, c=(ocs, oci)) + cmd(seq=n + 1) + ack(seq=n + 1) + ack(v=oack),
+        "header_only_ack": cmd() + frame_bytes(is_ack=True, session=2, seq=n) + ack(),
+    }
+    return {k: v for k, v in out.items() if vt.feasible_situation(kind, k)}
+
+
+def add_ack_memory(add: Callable[..., None], profile: str) -> None:
+    """What ACK matching remembers (PROTOCOL.md "ACK matching"), each case
+    telling the rule from the outsider check's wrong guesses (docs/OUTSIDER-CHECK.md
+    F4-F6): a decoded ACK shows which command it was matched to, a raw one
+    that none was remembered."""
+    flags = R("stream.ack_match", "stream.ack_memory")
+    obtain = frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=40)
+    ack_obtained = frame_bytes(is_ack=True, value=le16(2), session=2, seq=40)
+    add("ack.memory.bad_value_forgets", "stream.ack_memory",
+        "obtain control, an ACK whose 3-byte value does not decode, then a good ACK with the same key: the first "
+        "ACK used the entry up, so the second is not matched (raw)",
+        obtain + frame_bytes(is_ack=True, value=b"\x02\x00\x00", session=2, seq=40) + ack_obtained, flags)
+    bad_activation = frame_bytes(cmd_set=0, cmd_id=1, value=bytes(40), session=2, seq=40)
+    add("ack.memory.undecodable_command_changes_nothing", "stream.ack_memory",
+        "obtain control, then a 40-byte activation (does not decode) with the same session and SEQ, then an ACK "
+        "with code 2: still matched to obtain control (obtained), neither forgotten nor taken over by activation",
+        obtain + bad_activation + ack_obtained, flags)
+
+    def control_ack(seq: int) -> bytes:
+        return frame_bytes(is_ack=True, value=le16(2), session=2, seq=seq)
+
+    if profile != PROFILES[0]:
+        return   # the table does not depend on the profile: its 1,000-frame stream is generated once
+    obtains = b"".join(frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=q) for q in range(1, 1025))
+    again = frame_bytes(cmd_set=0, cmd_id=0, value=b"\x00", session=2, seq=1)
+    newer = b"".join(frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=q) for q in (1025, 1026))
+    add("ack.memory.limit_and_replacement", "stream.ack_memory",
+        "1024 obtain-control commands (session 2, SEQ 1..1024), a version query with SEQ 1 (replaces the oldest "
+        "entry, which keeps its place), two new commands SEQ 1025 and 1026, then ACKs for SEQ 1, 2, 3 and 1026: at "
+        "most 1024 are remembered and the oldest goes first, so SEQ 1 and 2 are raw, SEQ 3 and 1026 match",
+        obtains + again + newer + b"".join(control_ack(q) for q in (1, 2, 3, 1026)), flags)
+
+
+def add_ack_situations(s: Suite, profile: str) -> None:
+    """Every command kind (vt.command_kinds) in every ACK situation
+    (vt.ACK_SITUATIONS); the generator checks that each stream shows the
+    situation it is named after, as the coverage table reads it."""
+    kinds = vt.command_kinds()
+    if set(kinds) != set(COMMAND_VALUES):
+        raise GenerationError(f"COMMAND_VALUES must cover exactly the command kinds {kinds}")
+    for i, kind in enumerate(kinds):
+        other = kinds[(i + 1) % len(kinds)]
+        layout = "with" if vt.has_ack_layout(kind) else "without"
+        for situation, data in ack_situation_streams(kind, other, profile).items():
+            test = s.add("decode_stream", profile, f"streams.{profile}.ack.{kind}.{situation}",
+                         "stream.ack_situations", f"{kind} ({layout} an ACK layout): {vt.ACK_SITUATIONS[situation]}",
+                         {"hex": data.hex(), "chunks": [len(data)]},
+                         R("stream.ack_match") + (["E24"] if situation in ("session0_command", "matched_session1") else []))
+            case = vectors.cases_of({"testGroups": [{"operation": "decode_stream", "profile": profile,
+                                                     "tests": [test]}]}, "streams.json")[0]
+            if (kind, situation) not in vt.ack_situations(case):
+                raise GenerationError(f"ack.{kind}.{situation}: the stream does not show that situation "
+                                      f"({sorted(vt.ack_situations(case))})")
+
+
+def add_movement_precedence(s: Suite, profile: str) -> None:
+    """check_movement_control with two of its checks failing (length, mode,
+    range; vt.movement_checks): every undefined mode byte of the profile
+    with a value of 1, 16 or 18 bytes or a NaN setpoint (in turn), and
+    every documented one 16 or 18 bytes long with a setpoint out of range.
+    The length is checked first (the value must parse), then the mode, then
+    the ranges."""
+    op = "check_movement_control"
+    turn = 0
+    for byte in range(256):
+        c = classify_control_mode(byte, profile)
+        full = bytes.fromhex(mc_hex(byte, f32(1.0), f32(-1.0), 0x7FC00000, f32(5.0)))  # z NaN: out of any range
+        finite = bytes.fromhex(mc_hex(byte, f32(1.0), f32(-1.0), f32(0.5), f32(5.0)))
+        if c["classification"] == "documented":
+            for n in (16, 18):
+                data = (full + b"\x00")[:n]
+                cls = "truncated_payload" if n < 17 else "length_mismatch"
+                s.add(op, profile, f"control_ranges.{profile}.precedence.0x{byte:02x}.length{n}_range",
+                      "control.precedence", f"documented mode 0x{byte:02x}, z NaN (out of range), value {n} bytes "
+                      f"long: the length is checked first, {cls}", {"hex": data.hex()},
+                      R("control.value", "control.non_finite"), error=cls)
+            continue
+        kind = ("1", "16", "18", "range")[turn % 4]
+        turn += 1
+        if kind == "range":
+            data, cls, what = full, "undefined_mode", "17 bytes with z NaN: the mode is checked before the ranges"
+        else:
+            n = int(kind)
+            data = (finite + b"\x00")[:n]
+            cls = "truncated_payload" if n < 17 else "length_mismatch"
+            what = f"{n} byte(s): the length is checked before the mode, {cls}"
+        s.add(op, profile, f"control_ranges.{profile}.precedence.0x{byte:02x}.{kind}", "control.precedence",
+              f"mode 0x{byte:02x} is {c['classification']} on {profile}, value of {what}", {"hex": data.hex()},
+              R("control.undefined_mode", "control.value" if kind != "range" else "control.non_finite"), error=cls)
 
 
 # ============================================================== driver

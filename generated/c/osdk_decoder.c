@@ -407,6 +407,11 @@ static int64_t osdk_payload__key(const osdk_payload_t *self)
     return ((((int64_t)((self->is_ack ? INT64_C(65536) : INT64_C(0)))) + (((int64_t)(((int64_t)self->cmd_set))) * INT64_C(256))) + ((int64_t)(((int64_t)self->cmd_id))));
 }
 
+static bool osdk_payload_version_ack_value__has_version_id(const osdk_payload_version_ack_value_t *self)
+{
+    return ((int64_t)(((int64_t)self->profile)) != (int64_t)(OSDK_PAYLOAD_PROFILE_M100_FW2_3));
+}
+
 
 /* ---- parse functions ------------------------------------------------------------------------ */
 
@@ -1448,7 +1453,7 @@ osdk_status_t osdk_payload_parse(osdk_stream_t *io, osdk_payload_t *self, uint8_
         } else if (on == INT64_C(65536)) {
             osdk_status_t st;
             self->body.tag = OSDK_PAYLOAD_BODY_VERSION_ACK_VALUE;
-            st = osdk_payload_version_ack_value_parse(io, &self->body.u.version_ack_value, err);
+            st = osdk_payload_version_ack_value_parse(io, &self->body.u.version_ack_value, (uint8_t)(((int64_t)self->profile)), err);
             if (st != OSDK_OK) return st;
         } else if (on == INT64_C(65537)) {
             osdk_status_t st;
@@ -1652,16 +1657,26 @@ osdk_status_t osdk_payload_unknown_value_parse(osdk_stream_t *io, osdk_payload_u
 }
 
 /* osdk_payload::version_ack_value */
-osdk_status_t osdk_payload_version_ack_value_parse(osdk_stream_t *io, osdk_payload_version_ack_value_t *self, osdk_error_t *err)
+osdk_status_t osdk_payload_version_ack_value_parse(osdk_stream_t *io, osdk_payload_version_ack_value_t *self, uint8_t profile, osdk_error_t *err)
 {
     uint64_t u = 0;
     memset(self, 0, sizeof *self);
+    self->profile = profile;
     /* ack_code */
     if (!osdk_read_uint(io, 2, 0, &u)) return osdk_fail(err, OSDK_ERR_TRUNCATED_PAYLOAD, "osdk_payload::version_ack_value", "ack_code", io);
     self->ack_code = (uint16_t)u;
     /* version_crc */
     if (!osdk_read_uint(io, 4, 0, &u)) return osdk_fail(err, OSDK_ERR_TRUNCATED_PAYLOAD, "osdk_payload::version_ack_value", "version_crc", io);
     self->version_crc = (uint32_t)u;
+    /* version_id */
+    self->version_id_present = osdk_payload_version_ack_value__has_version_id(self);
+    if (self->version_id_present) {
+        {
+            int64_t n = INT64_C(11);
+            if (n < 0) return osdk_fail(err, OSDK_ERR_UNDECODABLE, "osdk_payload::version_ack_value", "version_id", io);
+            if (!osdk_read_bytes(io, (uint64_t)n, &self->version_id)) return osdk_fail(err, OSDK_ERR_TRUNCATED_PAYLOAD, "osdk_payload::version_ack_value", "version_id", io);
+        }
+    }
     /* version_name */
     {
         int64_t n = INT64_C(32);

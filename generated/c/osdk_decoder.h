@@ -619,8 +619,11 @@ typedef struct osdk_payload_lost_control {
 
 /* osdk_payload::version_ack_value */
 typedef struct osdk_payload_version_ack_value {
+    uint8_t profile; /* param, enum osdk_payload.profile */
     uint16_t ack_code; /* enum osdk_payload.version_ack */
     uint32_t version_crc;
+    osdk_bytes_t version_id; /* if has_version_id */
+    bool version_id_present;
     osdk_bytes_t version_name;
 } osdk_payload_version_ack_value_t;
 
@@ -797,7 +800,7 @@ osdk_status_t osdk_payload_frequency_request_parse(osdk_stream_t *io, osdk_paylo
 osdk_status_t osdk_payload_lost_control_parse(osdk_stream_t *io, osdk_payload_lost_control_t *self, osdk_error_t *err);
 osdk_status_t osdk_payload_lost_control_ack_value_parse(osdk_stream_t *io, osdk_payload_lost_control_ack_value_t *self, osdk_error_t *err);
 osdk_status_t osdk_payload_unknown_value_parse(osdk_stream_t *io, osdk_payload_unknown_value_t *self, osdk_error_t *err);
-osdk_status_t osdk_payload_version_ack_value_parse(osdk_stream_t *io, osdk_payload_version_ack_value_t *self, osdk_error_t *err);
+osdk_status_t osdk_payload_version_ack_value_parse(osdk_stream_t *io, osdk_payload_version_ack_value_t *self, uint8_t profile, osdk_error_t *err);
 osdk_status_t osdk_payload_version_query_parse(osdk_stream_t *io, osdk_payload_version_query_t *self, osdk_error_t *err);
 
 /* Decode a whole osdk_broadcast_a3_fw3_1 from buf[0..len). */

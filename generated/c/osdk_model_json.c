@@ -1878,6 +1878,10 @@ void osdk_payload_version_ack_value_to_json(const osdk_payload_version_ack_value
     osdk_json_enum(w, (int64_t)self->ack_code, osdk_payload_version_ack_name((int64_t)self->ack_code));
     osdk_json_key(w, "version_crc");
     osdk_json_uint(w, (uint64_t)self->version_crc);
+    if (self->version_id_present) {
+        osdk_json_key(w, "version_id");
+        osdk_json_hex(w, self->version_id.ptr, self->version_id.len);
+    }
     osdk_json_key(w, "version_name");
     osdk_json_hex(w, self->version_name.ptr, self->version_name.len);
     osdk_json_end_object(w);
@@ -1892,6 +1896,10 @@ bool osdk_payload_version_ack_value_field_to_json(const osdk_payload_version_ack
     }
     if (strcmp(field, "version_crc") == 0) {
         osdk_json_uint(w, (uint64_t)self->version_crc);
+        return true;
+    }
+    if (strcmp(field, "version_id") == 0 && self->version_id_present) {
+        osdk_json_hex(w, self->version_id.ptr, self->version_id.len);
         return true;
     }
     if (strcmp(field, "version_name") == 0) {

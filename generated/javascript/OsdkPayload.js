@@ -149,7 +149,7 @@ var OsdkPayload = (function() {
       this.body = new LostControl(this._io, this, this._root);
       break;
     case 65536:
-      this.body = new VersionAckValue(this._io, this, this._root);
+      this.body = new VersionAckValue(this._io, this, this._root, this.profile);
       break;
     case 65537:
       this.body = new ActivationAckValue(this._io, this, this._root);
@@ -440,22 +440,42 @@ var OsdkPayload = (function() {
   })();
 
   /**
-   * ACK of the version query.
+   * ACK of the version query. FW 3.1 firmware (profiles m100-fw3.1 and
+   * a3-fw3.1) puts an 11-byte version ID between the CRC and the name;
+   * M100 FW 2.3 has none (ERRATA E30).
+   * @see osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout"
+   * @see {@link https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp|(CoreAPI::getDroneVersionCallback)}
    */
 
   var VersionAckValue = OsdkPayload.VersionAckValue = (function() {
-    function VersionAckValue(_io, _parent, _root) {
+    function VersionAckValue(_io, _parent, _root, profile) {
       this._io = _io;
       this._parent = _parent;
       this._root = _root;
+      this.profile = profile;
 
       this._read();
     }
     VersionAckValue.prototype._read = function() {
       this.ackCode = this._io.readU2le();
       this.versionCrc = this._io.readU4le();
+      if (this.hasVersionId) {
+        this.versionId = this._io.readBytes(11);
+      }
       this.versionName = this._io.readBytes(32);
     }
+
+    /**
+     * true on FW 3.1 profiles, whose reply carries the 11-byte version ID.
+     */
+    Object.defineProperty(VersionAckValue.prototype, 'hasVersionId', {
+      get: function() {
+        if (this._m_hasVersionId !== undefined)
+          return this._m_hasVersionId;
+        this._m_hasVersionId = this.profile != OsdkPayload.Profile.M100_FW2_3;
+        return this._m_hasVersionId;
+      }
+    });
 
     /**
      * Activation state of the flight controller.
@@ -466,7 +486,15 @@ var OsdkPayload = (function() {
      */
 
     /**
+     * Version ID, ASCII, NUL-padded (FW 3.1 only).
+     */
+
+    /**
      * Version name, ASCII, NUL-padded.
+     */
+
+    /**
+     * Wire profile of the flight controller; it decides whether the version ID is there.
      */
 
     return VersionAckValue;

@@ -14,6 +14,7 @@ import functools
 from construct import Array, Bytes, Enum, GreedyBytes, Int8ul, Int16ul, Int32ul, Pass, Struct, Terminated
 
 from . import broadcast as broadcast_profiles
+from .combinators import when
 from .control import movement_control
 from .enums import (
     ACTIVATION_RESULT, COMMAND_SET, CONTROL_ACK, CONTROL_REQUEST_CODE, FREQUENCY_ACK, FREQUENCY_CODE,
@@ -22,18 +23,32 @@ from .enums import (
 
 __all__ = [
     "osdk_payload", "payload", "key", "BODY_BY_KEY",
-    "version_query", "version_ack_value", "activation_request", "activation_ack_value", "frequency_request",
+    "version_query", "version_ack_value", "has_version_id", "VERSION_ID_SIZE", "activation_request", "activation_ack_value", "frequency_request",
     "frequency_ack_value", "control_request", "control_ack_value", "broadcast", "lost_control",
     "lost_control_ack_value", "unknown_value",
 ]
 
 version_query = Struct("arbitrary" / Int8ul)
 
-version_ack_value = Struct(
-    "ack_code" / Enum(Int16ul, **VERSION_ACK),
-    "version_crc" / Int32ul,
-    "version_name" / Bytes(32),
-)
+VERSION_ID_SIZE = 11
+
+
+def has_version_id(profile) -> bool:
+    """Whether the profile's version ACK carries the 11-byte version ID
+    between the CRC and the name: FW 3.1 firmware does, M100 FW 2.3 does not
+    (ERRATA E30); as in the ksy, every profile but m100_fw2_3 has it."""
+    return profile_value(profile) != profile_value("m100-fw2.3")
+
+
+@functools.cache
+def version_ack_value(profile):
+    """The version ACK in a profile (see has_version_id)."""
+    return Struct(
+        "ack_code" / Enum(Int16ul, **VERSION_ACK),
+        "version_crc" / Int32ul,
+        "version_id" / when(has_version_id(profile), Bytes(VERSION_ID_SIZE)),
+        "version_name" / Bytes(32),
+    )
 
 activation_request = Struct(
     "app_id" / Int32ul,
@@ -83,7 +98,7 @@ BODY_BY_KEY = {
     0x0103: movement_control,
     0x0200: broadcast,  # needs the profile
     0x0201: lost_control,
-    0x10000: version_ack_value,
+    0x10000: version_ack_value,  # needs the profile
     0x10001: activation_ack_value,
     0x10010: frequency_ack_value,
     0x10100: control_ack_value,
@@ -95,8 +110,8 @@ BODY_BY_KEY = {
 @functools.lru_cache(maxsize=4096)
 def _payload(k: int, profile: int):
     body = BODY_BY_KEY.get(k, unknown_value)
-    if body is broadcast:
-        body = broadcast(profile)
+    if body is broadcast or body is version_ack_value:
+        body = body(profile)
     return Struct("body" / body, Terminated)
 
 

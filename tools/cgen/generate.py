@@ -39,9 +39,9 @@ _INT_TYPE = re.compile(r"^([us])([1248])(le|be)?$")
 BANNER = "/* Generated from spec/ by tools/cgen/generate.py. Do not edit. */\n"
 
 # The frame type the receiver (deframer) works on, and the receiver's
-# header checks: rules.yaml frame.receiver.header_checks, but CRC-16 first
-# (when it fails the other fields mean nothing) and without the start
-# byte, which the hunt for it already guarantees.
+# header checks: rules.yaml frame.receiver.header_checks in its order,
+# CRC-16 always first (when it fails the other fields mean nothing) and
+# without the start byte, which the hunt for it already guarantees.
 FRAME_TYPE = "osdk_frame"
 
 # docs/VALUE-MODEL.md, error classes, in the table's order; the classes of

@@ -212,7 +212,11 @@ func resolve(obj reflect.Value, path string) (any, error) {
 		}
 		f := v.FieldByName(goName)
 		if !f.IsValid() {
-			return nil, fmt.Errorf("%s: no field %s in %s", path, goName, v.Type().Name())
+			inst, err := instance(v, goName)
+			if err != nil {
+				return nil, fmt.Errorf("%s: %w", path, err)
+			}
+			f = inst
 		}
 		v = f
 	}
@@ -229,6 +233,24 @@ func resolve(obj reflect.Value, path string) (any, error) {
 		return int64(u), nil
 	}
 	return nil, fmt.Errorf("%s: unsupported value kind %s", path, v.Kind())
+}
+
+// instance computes a value instance (a ksy `instances` entry) with the
+// method the Kaitai compiler generated for it, so its expression is never
+// evaluated a second way here.
+func instance(v reflect.Value, goName string) (reflect.Value, error) {
+	if !v.CanAddr() {
+		return reflect.Value{}, fmt.Errorf("no field %s in %s", goName, v.Type().Name())
+	}
+	m := v.Addr().MethodByName(goName)
+	if !m.IsValid() || m.Type().NumIn() != 0 || m.Type().NumOut() != 2 {
+		return reflect.Value{}, fmt.Errorf("no field or instance %s in %s", goName, v.Type().Name())
+	}
+	out := m.Call(nil)
+	if err, _ := out[1].Interface().(error); err != nil {
+		return reflect.Value{}, fmt.Errorf("instance %s: %w", goName, err)
+	}
+	return out[0], nil
 }
 
 // camel is the Go name the Kaitai compiler gives a ksy id (has_ns_and_sync

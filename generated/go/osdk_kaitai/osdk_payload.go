@@ -197,7 +197,7 @@ func (this *OsdkPayload) Read(io *kaitai.Stream, parent kaitai.Struct, root *Osd
 		}
 		this.Body = tmp8
 	case 65536:
-		tmp9 := NewOsdkPayload_VersionAckValue()
+		tmp9 := NewOsdkPayload_VersionAckValue(this.Profile)
 		err = tmp9.Read(this._io, this, this._root)
 		if err != nil {
 			return err
@@ -688,18 +688,27 @@ func (this *OsdkPayload_UnknownValue) Read(io *kaitai.Stream, parent *OsdkPayloa
  */
 
 /**
- * ACK of the version query.
+ * ACK of the version query. FW 3.1 firmware (profiles m100-fw3.1 and
+ * a3-fw3.1) puts an 11-byte version ID between the CRC and the name;
+ * M100 FW 2.3 has none (ERRATA E30).
+ * @see "osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout""
+ * @see <a href="https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp">(CoreAPI::getDroneVersionCallback)</a>
  */
 type OsdkPayload_VersionAckValue struct {
 	AckCode OsdkPayload_VersionAck
 	VersionCrc uint32
+	VersionId []byte
 	VersionName []byte
+	Profile OsdkPayload_Profile
 	_io *kaitai.Stream
 	_root *OsdkPayload
 	_parent *OsdkPayload
+	_f_hasVersionId bool
+	hasVersionId bool
 }
-func NewOsdkPayload_VersionAckValue() *OsdkPayload_VersionAckValue {
+func NewOsdkPayload_VersionAckValue(profile OsdkPayload_Profile) *OsdkPayload_VersionAckValue {
 	return &OsdkPayload_VersionAckValue{
+		Profile: profile,
 	}
 }
 
@@ -722,13 +731,37 @@ func (this *OsdkPayload_VersionAckValue) Read(io *kaitai.Stream, parent *OsdkPay
 		return err
 	}
 	this.VersionCrc = uint32(tmp33)
-	tmp34, err := this._io.ReadBytes(int(32))
+	tmp34, err := this.HasVersionId()
 	if err != nil {
 		return err
 	}
-	tmp34 = tmp34
-	this.VersionName = tmp34
+	if (tmp34) {
+		tmp35, err := this._io.ReadBytes(int(11))
+		if err != nil {
+			return err
+		}
+		tmp35 = tmp35
+		this.VersionId = tmp35
+	}
+	tmp36, err := this._io.ReadBytes(int(32))
+	if err != nil {
+		return err
+	}
+	tmp36 = tmp36
+	this.VersionName = tmp36
 	return err
+}
+
+/**
+ * true on FW 3.1 profiles, whose reply carries the 11-byte version ID.
+ */
+func (this *OsdkPayload_VersionAckValue) HasVersionId() (v bool, err error) {
+	if (this._f_hasVersionId) {
+		return this.hasVersionId, nil
+	}
+	this._f_hasVersionId = true
+	this.hasVersionId = bool(this.Profile != OsdkPayload_Profile__M100Fw23)
+	return this.hasVersionId, nil
 }
 
 /**
@@ -737,6 +770,10 @@ func (this *OsdkPayload_VersionAckValue) Read(io *kaitai.Stream, parent *OsdkPay
 
 /**
  * CRC of the firmware version.
+ */
+
+/**
+ * Version ID, ASCII, NUL-padded (FW 3.1 only).
  */
 
 /**
@@ -766,11 +803,11 @@ func (this *OsdkPayload_VersionQuery) Read(io *kaitai.Stream, parent *OsdkPayloa
 	this._parent = parent
 	this._root = root
 
-	tmp35, err := this._io.ReadU1()
+	tmp37, err := this._io.ReadU1()
 	if err != nil {
 		return err
 	}
-	this.Arbitrary = tmp35
+	this.Arbitrary = tmp37
 	return err
 }
 

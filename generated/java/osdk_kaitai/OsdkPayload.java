@@ -197,7 +197,7 @@ public class OsdkPayload extends KaitaiStruct {
             break;
         }
         case 65536: {
-            this.body = new VersionAckValue(this._io, this, _root);
+            this.body = new VersionAckValue(this._io, this, _root, profile());
             break;
         }
         case 65537: {
@@ -757,38 +757,58 @@ public class OsdkPayload extends KaitaiStruct {
     }
 
     /**
-     * ACK of the version query.
+     * ACK of the version query. FW 3.1 firmware (profiles m100-fw3.1 and
+     * a3-fw3.1) puts an 11-byte version ID between the CRC and the name;
+     * M100 FW 2.3 has none (ERRATA E30).
+     * @see "osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout""
+     * @see <a href="https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp">(CoreAPI::getDroneVersionCallback)</a>
      */
     public static class VersionAckValue extends KaitaiStruct {
-        public static VersionAckValue fromFile(String fileName) throws IOException {
-            return new VersionAckValue(new ByteBufferKaitaiStream(fileName));
+
+        public VersionAckValue(KaitaiStream _io, Profile profile) {
+            this(_io, null, null, profile);
         }
 
-        public VersionAckValue(KaitaiStream _io) {
-            this(_io, null, null);
+        public VersionAckValue(KaitaiStream _io, OsdkPayload _parent, Profile profile) {
+            this(_io, _parent, null, profile);
         }
 
-        public VersionAckValue(KaitaiStream _io, OsdkPayload _parent) {
-            this(_io, _parent, null);
-        }
-
-        public VersionAckValue(KaitaiStream _io, OsdkPayload _parent, OsdkPayload _root) {
+        public VersionAckValue(KaitaiStream _io, OsdkPayload _parent, OsdkPayload _root, Profile profile) {
             super(_io);
             this._parent = _parent;
             this._root = _root;
+            this.profile = profile;
             _read();
         }
         private void _read() {
             this.ackCode = OsdkPayload.VersionAck.byId(this._io.readU2le());
             this.versionCrc = this._io.readU4le();
+            if (hasVersionId()) {
+                this.versionId = this._io.readBytes(11);
+            }
             this.versionName = this._io.readBytes(32);
         }
 
         public void _fetchInstances() {
+            if (hasVersionId()) {
+            }
+        }
+        private Boolean hasVersionId;
+
+        /**
+         * true on FW 3.1 profiles, whose reply carries the 11-byte version ID.
+         */
+        public Boolean hasVersionId() {
+            if (this.hasVersionId != null)
+                return this.hasVersionId;
+            this.hasVersionId = profile() != OsdkPayload.Profile.M100_FW2_3;
+            return this.hasVersionId;
         }
         private VersionAck ackCode;
         private long versionCrc;
+        private byte[] versionId;
         private byte[] versionName;
+        private Profile profile;
         private OsdkPayload _root;
         private OsdkPayload _parent;
 
@@ -803,9 +823,19 @@ public class OsdkPayload extends KaitaiStruct {
         public long versionCrc() { return versionCrc; }
 
         /**
+         * Version ID, ASCII, NUL-padded (FW 3.1 only).
+         */
+        public byte[] versionId() { return versionId; }
+
+        /**
          * Version name, ASCII, NUL-padded.
          */
         public byte[] versionName() { return versionName; }
+
+        /**
+         * Wire profile of the flight controller; it decides whether the version ID is there.
+         */
+        public Profile profile() { return profile; }
         public OsdkPayload _root() { return _root; }
         public OsdkPayload _parent() { return _parent; }
     }

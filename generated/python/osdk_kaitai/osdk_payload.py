@@ -110,7 +110,7 @@ class OsdkPayload(KaitaiStruct):
             self.body = OsdkPayload.LostControl(self._io, self, self._root)
         elif _on == 65536:
             pass
-            self.body = OsdkPayload.VersionAckValue(self._io, self, self._root)
+            self.body = OsdkPayload.VersionAckValue(self.profile, self._io, self, self._root)
         elif _on == 65537:
             pass
             self.body = OsdkPayload.ActivationAckValue(self._io, self, self._root)
@@ -368,21 +368,48 @@ class OsdkPayload(KaitaiStruct):
 
 
     class VersionAckValue(KaitaiStruct):
-        """ACK of the version query."""
-        def __init__(self, _io, _parent=None, _root=None):
+        """ACK of the version query. FW 3.1 firmware (profiles m100-fw3.1 and
+        a3-fw3.1) puts an 11-byte version ID between the CRC and the name;
+        M100 FW 2.3 has none (ERRATA E30).
+        
+        .. seealso::
+           osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout"
+        
+        
+        .. seealso::
+           (CoreAPI::getDroneVersionCallback) - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp
+        """
+        def __init__(self, profile, _io, _parent=None, _root=None):
             super(OsdkPayload.VersionAckValue, self).__init__(_io)
             self._parent = _parent
             self._root = _root
+            self.profile = profile
             self._read()
 
         def _read(self):
             self.ack_code = KaitaiStream.resolve_enum(OsdkPayload.VersionAck, self._io.read_u2le())
             self.version_crc = self._io.read_u4le()
+            if self.has_version_id:
+                pass
+                self.version_id = self._io.read_bytes(11)
+
             self.version_name = self._io.read_bytes(32)
 
 
         def _fetch_instances(self):
             pass
+            if self.has_version_id:
+                pass
+
+
+        @property
+        def has_version_id(self):
+            """true on FW 3.1 profiles, whose reply carries the 11-byte version ID."""
+            if hasattr(self, '_m_has_version_id'):
+                return self._m_has_version_id
+
+            self._m_has_version_id = self.profile != OsdkPayload.Profile.m100_fw2_3
+            return getattr(self, '_m_has_version_id', None)
 
 
     class VersionQuery(KaitaiStruct):
