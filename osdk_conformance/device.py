@@ -643,7 +643,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
     with an.lock:
         results += passive_results(an, opts, port.state)
     signame = interrupts.first
-    phase = interrupts.first_phase if signame else run.phase if run else "passive"
+    phase = interrupts.first_phase if signame else (run.stopped_in or run.phase) if run else "passive"
     if run:
         results += run.results
     if args.active and (signame or error):

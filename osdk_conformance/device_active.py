@@ -28,6 +28,9 @@ from .report import ERROR, FAIL, PASS, SKIP, Result
 # at exactly that phase (tests/test_device_interrupt.py).
 HOLD_ENV = "OSDKC_DEVICE_HOLD_AT"
 HOLD_SECONDS = 10.0
+# Test hook: phase names at which the run raises RuntimeError, standing for a
+# bug of ours, so a test can show the clean-up runs on that route too.
+RAISE_ENV = "OSDKC_DEVICE_RAISE_AT"
 PHASES = ("version", "activation", "frequency", "frequency.window", "obtain", "obtain.pending", "movement.attitude",
           "movement.velocity", "movement.position", "movement.hover", "release", "restore")
 ACTIVE_CHECKS = ("active.version", "active.activation", "active.frequency", "active.control_obtain",
@@ -208,9 +211,11 @@ class ActiveRun:
         self.results: list[Result] = []
         self.changes = Changes()
         self.phase = "start"
+        self.stopped_in: str | None = None   # the phase an exception or a signal ended the checks in
         self.cleanup_cut: str | None = None   # what the clean-up left undone, when a second signal cut it
         self.freq_ok = False
         self._holds = set(filter(None, os.environ.get(HOLD_ENV, "").split(",")))
+        self._raises = set(filter(None, os.environ.get(RAISE_ENV, "").split(",")))
 
     def res(self, cid: str, status: str, msg: str, details: dict | None = None, kind: str = "") -> None:
         self.results.append(Result("active", cid, status, msg, details or {}, kind=kind))
@@ -222,6 +227,8 @@ class ActiveRun:
         if phase in self._holds:
             _say(f"phase {phase}: holding {HOLD_SECONDS:g} s ({HOLD_ENV})")
             time.sleep(HOLD_SECONDS)
+        if phase in self._raises:
+            raise RuntimeError(f"raised at phase {phase} by the test hook {RAISE_ENV}")
 
     # ---- the run -------------------------------------------------------------------------
 
@@ -232,6 +239,7 @@ class ActiveRun:
             if self.interrupts:
                 self.interrupts.mode = "cleanup"   # from here on a signal does not stop the clean-up
         except BaseException:
+            self.stopped_in = self.phase   # the clean-up moves self.phase on
             self.clean_up(interrupted=True)
             raise
         self.clean_up(interrupted=bool(self.interrupts and self.interrupts.signals))

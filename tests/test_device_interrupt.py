@@ -23,7 +23,7 @@ from pathlib import Path
 import pytest
 
 from osdk_conformance.capture import read_capture
-from osdk_conformance.device_active import EXIT_BY_SIGNAL, HOLD_ENV, PHASES
+from osdk_conformance.device_active import EXIT_BY_SIGNAL, HOLD_ENV, PHASES, RAISE_ENV
 from osdk_conformance.device_wire import commands_sent
 from osdk_conformance.sim import spawned
 
@@ -43,7 +43,7 @@ def _lines(stream, q: queue.Queue) -> None:
 
 
 def run_interrupted(tmp: Path, holds: list[str], signals: list[int], device_args=ACTIVE,
-                    sim_args=("--app-id", APP), wait_for: list[str] | None = None) -> dict:
+                    sim_args=("--app-id", APP), wait_for: list[str] | None = None, env: dict | None = None) -> dict:
     """Run the device with holds at `holds`; when stderr shows the i-th hold
     (or the i-th text of `wait_for`), send signals[i]."""
     marks = wait_for or [f"phase {hold}: holding" for hold in holds]
@@ -51,7 +51,8 @@ def run_interrupted(tmp: Path, holds: list[str], signals: list[int], device_args
     with spawned(*sim_args, "--stats", str(stats)) as (url, _):
         dev = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "device", "--port", url, "--capture",
                                 str(cap), "--junit", str(junit), *device_args], stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True, env=dict(os.environ, **{HOLD_ENV: ",".join(holds)}))
+                               stderr=subprocess.PIPE, text=True,
+                               env=dict(os.environ, **{HOLD_ENV: ",".join(holds)}, **(env or {})))
         q: queue.Queue = queue.Queue()
         threading.Thread(target=_lines, args=(dev.stderr, q), daemon=True).start()
         err = []
@@ -179,4 +180,35 @@ def test_active_without_app_id_skips_what_needs_activation(tmp_path):
         assert r["checks"][cid][0] == "SKIP", (cid, r["checks"][cid])
     assert "no --app-id given" in r["checks"]["active.control_obtain"][1]
     assert r["checks"]["active.frequency_restore"][0] == "PASS"
+    assert_cleaned_up(r)
+
+
+def test_an_internal_error_mid_movement_still_releases_control(tmp_path):
+    """The exception route: a bug of ours (raised by the test hook at a movement step) ends the run with the
+    clean-up done, the results so far reported, and exit 1."""
+    r = run_interrupted(tmp_path, [], [], env={RAISE_ENV: "movement.velocity"})
+    assert r["rc"] == 1, r["out"] + r["err"]
+    assert "Traceback" not in r["err"]
+    status, message = r["checks"]["run.complete"]
+    assert status == "ERROR" and "internal error during phase movement.velocity" in message
+    assert "clean-up: complete" in message
+    assert r["checks"]["active.control_obtain"][0] == "PASS"
+    assert last_index(r["sent"], MOVEMENT) >= 0
+    assert_cleaned_up(r)
+
+
+def test_a_port_lost_during_movement_is_released_when_it_comes_back(tmp_path):
+    """The lost-port route: the simulator's port goes away for half a second while movement commands stream
+    (a symlink keeps its name); the run stops moving, waits for the port, then releases control and restores
+    the rates, and fails the link check instead of passing."""
+    link = tmp_path / "fc"
+    args = [*ACTIVE]
+    args[args.index("--motion-seconds") + 1] = "3"   # about 11 s of movement commands
+    r = run_interrupted(tmp_path, [], [], device_args=args,
+                        sim_args=("--app-id", APP, "--link", str(link), "--unplug-at", "7", "--unplug-for", "0.5"))
+    assert r["rc"] == 1, r["out"] + r["err"]
+    assert "Traceback" not in r["err"]
+    assert r["stats"]["control"] == "rc"
+    assert r["checks"]["link.connection"][0] == "FAIL", r["checks"]["link.connection"]
+    assert last_index(r["sent"], MOVEMENT) >= 0
     assert_cleaned_up(r)
