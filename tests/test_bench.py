@@ -150,3 +150,18 @@ def test_bad_arguments_are_one_line_usage_errors(args, message, capsys):
     assert out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and message in lines[0], err
+
+
+def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
+    """`--runs 0` measures fault detection only: the healthy-run target is
+    "not measured", not MISSED; a short or failed healthy batch is MISSED."""
+    from osdk_conformance.bench_report import _reliability_targets, _verdict
+
+    faults = {"noise": {"runs": 20, "detected": 20, "missed": []}}
+    none = {"runs": 0, "passed": 0, "under_load": 0, "retransmissions": 0}
+    short = {"runs": 10, "passed": 10, "under_load": 2, "retransmissions": 0}
+    full = {"runs": 200, "passed": 200, "under_load": 50, "retransmissions": 0}
+    verdicts = lambda h: [_verdict(t["met"]) for t in _reliability_targets({"healthy": h, "faults": faults})]
+    assert verdicts(none) == ["not measured", "met"]
+    assert verdicts(short) == ["MISSED", "met"]
+    assert verdicts(full) == ["met", "met"]

@@ -118,7 +118,8 @@ def test_no_source_reaches_outside_the_checkout() -> None:
 
 
 def test_the_pattern_catches_both_ways_of_reaching_out() -> None:
-    assert OUTSIDE.search('SEED = "../shared/seeds/x.txt"')
-    assert OUTSIDE.search('SEED = ROOT.parent / "shared" / "seeds" / "x.txt"')
+    shelf = "sha" + "red"   # spelled apart, so this file holds no reference to the shelf itself
+    assert OUTSIDE.search(f'SEED = "../{shelf}/seeds/x.txt"')
+    assert OUTSIDE.search(f'SEED = ROOT.parent / "{shelf}" / "seeds" / "x.txt"')
     assert OUTSIDE.search("base = Path(__file__).parents[2] / 'shared'")
     assert not OUTSIDE.search('"""Item types shared by the three broadcast profiles"""')
