@@ -16,6 +16,7 @@ import time
 
 import pytest
 
+from osdk_conformance.bench_reliability import FAULT_CASES
 from osdk_conformance.sim import spawned
 
 # Measures rates and timing of a live simulator: run alone, never beside
@@ -49,20 +50,10 @@ def failing(checks: dict) -> list[str]:
 
 QUICK = ("--active-window", "1", "--motion-seconds", "1.2")
 ENV_KEY = {"OSDK_TEST_KEY": KEY}
-FAULTS = [
-    (("--noise", "0.05"), ["link.framing"]),
-    (("--bitflip", "0.05"), ["link.crc"]),
-    (("--drop-bytes", "0.05"), ["link.short_frames"]),
-    (("--truncate", "0.05"), ["link.short_frames"]),
-    (("--bad-crc", "0.05"), ["link.crc", "stream.sequence"]),
-    (("--duplicate", "0.05"), ["stream.duplicates"]),
-    (("--jitter", "80"), ["stream.jitter"]),
-    (("--rate-drift", "0.25"), ["stream.rates"]),
-    (("--implausible",), ["values.quaternion_norm", "values.gps_health", "values.rc_channels",
-                          "values.flight_status", "values.time_stamp"]),
-    (("--wrong-profile", "m100-fw3.1"), ["decode.profile", "decode.frames"]),
-]
-FAULT_IDS = [f[0][0].lstrip("-") for f in FAULTS]
+# The passive fault kinds, from the one table the reliability bench measures
+# (osdkc bench --only reliability); stall and unplug have tests of their own below.
+FAULTS = {kind: (sim_args, must_fail, seconds) for kind, (sim_args, dev_args, must_fail, seconds) in FAULT_CASES.items()
+          if not dev_args and kind not in ("stall", "unplug")}
 
 
 def _scenarios(tmp) -> dict[str, tuple[tuple, tuple, dict | None]]:
@@ -73,9 +64,9 @@ def _scenarios(tmp) -> dict[str, tuple[tuple, tuple, dict | None]]:
                              ("--profile", p, "--duration", "2", "--active", "--allow-motion", "--app-id", "1234",
                               "--html", str(tmp / f"{p}.html"), "--junit", str(tmp / f"{p}.xml"), *RELAXED, *QUICK),
                              None)
-    for fault, fid in zip(FAULTS, FAULT_IDS):
-        sc[f"fault-{fid}"] = (("--profile", "a3-fw3.1", "--seed", "7", *fault[0]),
-                              ("--profile", "a3-fw3.1", "--duration", "2.5"), None)
+    for kind, (sim_args, _, seconds) in FAULTS.items():
+        sc[f"fault-{kind}"] = (("--profile", "a3-fw3.1", "--seed", "7", *sim_args),
+                               ("--profile", "a3-fw3.1", "--duration", str(seconds)), None)
     sc["no-motion"] = (("--app-id", "9"), ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "9",
                                           *RELAXED, *QUICK), None)
     sc["rc-mode-p"] = (("--rc-mode", "P", "--app-id", "3"),
@@ -136,13 +127,13 @@ def test_movement_is_not_sent_without_allow_motion(runs):
     assert "MOVES THE AIRCRAFT" not in out
 
 
-@pytest.mark.parametrize("fault,must_fail", FAULTS, ids=FAULT_IDS)
-def test_each_fault_fails_its_named_check(runs, fault, must_fail):
-    _, rc, checks, out = runs[f"fault-{fault[0].lstrip('-')}"]
+@pytest.mark.parametrize("kind", FAULTS)
+def test_each_fault_fails_its_named_check(runs, kind):
+    _, rc, checks, out = runs[f"fault-{kind}"]
     assert rc == 1, out
-    for name in must_fail:
+    for name in FAULTS[kind][1]:
         assert checks[name][0] == "FAIL", (name, checks.get(name), out)
-    if fault[0] == "--wrong-profile":
+    if kind == "wrong_profile":
         assert "--profile m100-fw3.1" in checks["decode.profile"][1]
 
 
