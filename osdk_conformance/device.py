@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from .errors import UsageError
+from .errors import UsageError, one_line
 from .report import ERROR, FAIL, PASS, SKIP, Result
 
 EXIT_STATUS = ("exit status: 0 every check passed, 1 a check failed or errored, 2 usage or port error, "
@@ -407,7 +407,7 @@ class Port:
         try:
             self.ser = self._open()
         except Exception as e:  # SerialException, ValueError (bad URL), OSError
-            raise UsageError(f"cannot open port {self.url}: {_one_line(e)}") from None
+            raise UsageError(f"cannot open port {self.url}: {one_line(e)}") from None
         if start:
             self.start(self.cap)
 
@@ -435,7 +435,7 @@ class Port:
                 data = ser.read(min(65536, waiting) if waiting else 1)
             except Exception as e:
                 t = time.time()
-                self.state.disconnects.append([t, None, _one_line(e)])
+                self.state.disconnects.append([t, None, one_line(e)])
                 with self.wlock:
                     try:
                         ser.close()
@@ -464,7 +464,7 @@ class Port:
             try:
                 self.ser.write(data)
             except Exception as e:
-                raise PortDown(_one_line(e)) from None
+                raise PortDown(one_line(e)) from None
 
     def close(self) -> None:
         self.stop.set()
@@ -477,10 +477,6 @@ class Port:
                     self.ser.close()
                 except Exception:
                     pass
-
-
-def _one_line(e: Exception) -> str:
-    return " ".join(str(e).split()) or type(e).__name__
 
 
 # --------------------------------------------------------------------------
@@ -633,7 +629,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
     except KeyboardInterrupt:
         pass   # the signal is in interrupts.signals; ActiveRun has cleaned up
     except Exception as e:   # a bug of ours: the clean-up ran, the results so far are still reported
-        error = f"{type(e).__name__}: {_one_line(e)}"
+        error = f"{type(e).__name__}: {one_line(e)}"
     finally:
         interrupts.mode = "report"
         port.close()

@@ -21,6 +21,7 @@ import time
 from dataclasses import dataclass
 
 from .commands import ack_code_text
+from .errors import exit_status_of_signal, one_line
 from .report import ERROR, FAIL, PASS, SKIP, Result
 
 # Test hook: a comma-separated list of phase names at which the run announces
@@ -37,7 +38,7 @@ ACTIVE_CHECKS = ("active.version", "active.activation", "active.frequency", "act
                  "active.movement", "active.control_release", "active.frequency_restore")
 # Exit status of a run ended by a signal: the shell's 128 + signal number, as
 # `osdkc` returns 130 for any other command interrupted with Ctrl-C.
-EXIT_BY_SIGNAL = {"SIGINT": 130, "SIGTERM": 143}
+EXIT_BY_SIGNAL = {name: exit_status_of_signal(name) for name in ("SIGINT", "SIGTERM")}
 CLEANUP_ACK_TIMEOUT, CLEANUP_TRIES = 0.5, 2   # after an interruption: at most ~2 s of waiting per command
 PORT_BACK_TIMEOUT = 2.0                        # s to wait for a lost port to come back before the clean-up
 
@@ -126,10 +127,6 @@ def _say(text: str) -> None:
     print(f"osdkc device: {text}", file=sys.stderr, flush=True)
 
 
-def _one_line(e: BaseException) -> str:
-    return " ".join(str(e).split()) or type(e).__name__
-
-
 class Commander:
     """Sends commands (session 2, ACK required, up to 3 tries) and waits for ACKs."""
 
@@ -175,7 +172,7 @@ class Commander:
                 try:
                     parsed = self.payload(cmd_set, cmd_id, True, self.profile).parse(ack[3]).body
                 except Exception as e:
-                    return None, f"ACK does not decode: {_one_line(e)} (value {ack[3].hex()})"
+                    return None, f"ACK does not decode: {one_line(e)} (value {ack[3].hex()})"
                 return parsed, time.monotonic() - t0
         return None, f"no ACK after {tries} tries of {timeout}s"
 

@@ -13,3 +13,9 @@ def exit_status_of_signal(signame: str) -> int:
     import signal
 
     return 128 + signal.Signals[signame].value
+
+
+def one_line(exc: BaseException) -> str:
+    """An exception's message on one line (white space folded), or its type's
+    name when it has none: what a report or a one-line error shows."""
+    return " ".join(str(exc).split()) or type(exc).__name__
