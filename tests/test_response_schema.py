@@ -215,20 +215,28 @@ def test_runner_judges_a_schema_violation_apart_from_a_mismatch(cases):
     assert r.kind == rs.SCHEMA_VIOLATION and "and:" in r.message  # the value is wrong too: both said
 
 
-def test_a_run_reports_schema_violations_in_its_failure_table(tmp_path):
-    testee = tmp_path / "extra_field_testee.py"
+def _run_altered_reference(tmp_path, alter: str):
+    """`osdkc run` on the reference answers, each changed by `alter` (Python
+    lines run with `req` and `res` in scope), over 16 control-mode cases."""
+    testee = tmp_path / "altered_reference_testee.py"
+    body = "".join(f"    {line}\n" for line in alter.splitlines())
     testee.write_text(
         "import json, sys\n"
         f"sys.path.insert(0, {str(ROOT)!r})\n"
         "from osdk_conformance.reference import request_answer\n"
         "for line in sys.stdin:\n"
-        "    res = request_answer(json.loads(line))\n"
-        "    if res.get('ok') and 'fields' in res['result']:\n"
-        "        res['result']['note'] = 'not in the schema'\n"
+        "    req = json.loads(line)\n"
+        "    res = request_answer(req)\n"
+        f"{body}"
         "    print(json.dumps(res), flush=True)\n")
-    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--testee",
+    return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--testee",
                            f"{sys.executable} {testee}", "--filter", "control_mode.a3-fw3.1.0x4", "--no-progress"],
                           capture_output=True, text=True, cwd=ROOT, timeout=120)
+
+
+def test_a_run_reports_schema_violations_in_its_failure_table(tmp_path):
+    proc = _run_altered_reference(tmp_path, "if res.get('ok') and 'fields' in res['result']:\n"
+                                            "    res['result']['note'] = 'not in the schema'")
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "schema_violation 16" in proc.stdout, proc.stdout
     assert "[schema_violation]" in proc.stdout and "note" in proc.stdout
@@ -263,20 +271,7 @@ def test_protocol_md_combination_table_is_the_rules():
 
 
 def test_a_capabilities_answer_that_breaks_its_schema_fails_the_run_but_lets_it_go_on(tmp_path):
-    testee = tmp_path / "loose_capabilities_testee.py"
-    testee.write_text(
-        "import json, sys\n"
-        f"sys.path.insert(0, {str(ROOT)!r})\n"
-        "from osdk_conformance.reference import request_answer\n"
-        "for line in sys.stdin:\n"
-        "    req = json.loads(line)\n"
-        "    res = request_answer(req)\n"
-        "    if req['op'] == 'capabilities':\n"
-        "        res['result']['version'] = 2\n"
-        "    print(json.dumps(res), flush=True)\n")
-    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--testee",
-                           f"{sys.executable} {testee}", "--filter", "control_mode.a3-fw3.1.0x4", "--no-progress"],
-                          capture_output=True, text=True, cwd=ROOT, timeout=120)
+    proc = _run_altered_reference(tmp_path, "if req['op'] == 'capabilities':\n    res['result']['version'] = 2")
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "schema_violation 1" in proc.stdout and "version" in proc.stdout, proc.stdout
     assert "16 of 16" in proc.stdout or "16 / 16" in proc.stdout, proc.stdout  # the cases still ran and passed
