@@ -66,7 +66,7 @@ fi
 # ---- Python: fuzz/fuzz_decode.py under atheris
 if [ -n "$PY_ENGINE" ]; then
     # The kit reads spec/ and the vector schema at run time, from the
-    # directory above its package (osdk_conformance/paths.py): in the bundle,
+    # directory above its package (osdk_conformance/core/paths.py): in the bundle,
     # next to it.
     compile_python_fuzzer fuzz/fuzz_decode.py --paths tools --paths conformance/testees \
         --add-data "spec:spec" --add-data "vectors/vectors.schema.json:vectors"

@@ -2,7 +2,7 @@
 """atheris target: the Python receiver on arbitrary byte streams.
 
 The input is read as every stream target reads it (tools/fuzz_corpus.py
-stream_input: a selector byte for the profile and the read size, then the
+stream_reads: a selector byte for the profile and the read size, then the
 stream). The stream goes through what `osdkc decode` runs (decode.received_bytes,
 so pcapng captures too, then deframe + decode.Decoder on the Construct spec)
 and through the Kaitai-Python testee's stream decoder on the same reads.
@@ -12,7 +12,7 @@ to an unreadable capture, is expected), an event class outside the value
 model or `undecodable` (which docs/VALUE-MODEL.md says should not happen),
 events out of stream order or outside the input, a frame event that is not
 LEN bytes, a model JSON cannot carry, or the two decoders disagreeing
-(judged by osdk_conformance.fuzz.disagreement, as `osdkc fuzz` judges).
+(judged by osdk_conformance.harness.fuzz.disagreement, as `osdkc fuzz` judges).
 
     .venv/bin/python fuzz/fuzz_decode.py CORPUS_DIR -max_total_time=60
     .venv/bin/python fuzz/fuzz_decode.py crash-FILE        # replay one input
@@ -39,13 +39,12 @@ with atheris.instrument_imports(include=["osdk_conformance", "osdk_construct", "
     import kaitai_python_testee as kaitai
     import osdk_construct.frame  # noqa: F401 - decode.Decoder imports it lazily; instrument it now
     import osdk_construct.payload  # noqa: F401
-    from fuzz_corpus import stream_input
-    from osdk_conformance import model
-    from osdk_conformance.decode import decode_events, received_bytes
-    from osdk_conformance.deframe import split_chunks
-    from osdk_conformance.errors import UsageError
-    from osdk_conformance.fuzz import disagreement
-    from osdk_conformance.vectors import SCHEMA_PATH
+    from fuzz_corpus import stream_reads
+    from osdk_conformance.core import model
+    from osdk_conformance.reference.decode import decode_events, received_bytes
+    from osdk_conformance.core.errors import UsageError
+    from osdk_conformance.harness.fuzz import disagreement
+    from osdk_conformance.harness.vectors import SCHEMA_PATH
 
 ERROR_CLASSES = frozenset(json.loads(SCHEMA_PATH.read_text(encoding="utf-8"))["$defs"]["error_class"]["enum"]) \
     - {"undecodable"}
@@ -72,11 +71,10 @@ def check_events(events: list[dict], total: int, who: str) -> None:
 
 
 def test_one_input(data: bytes) -> None:
-    parsed = stream_input(data)
+    parsed = stream_reads(data)
     if parsed is None:
         return
-    profile, size, stream = parsed
-    reads = split_chunks(stream, [size] * (len(stream) // size))
+    profile, reads = parsed
     try:
         received = list(received_bytes(reads))
     except UsageError:

@@ -1,68 +1,70 @@
-"""osdkc: the command line of the OPEN protocol conformance kit."""
+"""osdkc: the command line of the OPEN protocol conformance kit.
+
+Each command is a row of COMMANDS: where it lives and the names of its
+`add_arguments(parser, profiles)` and run function. Only the module of the
+command being run is imported (start-up: `osdkc decode` in a pipeline should
+not load the simulator, the harness and the benchmarks), so this is the one
+place where the package imports lazily.
+"""
 from __future__ import annotations
 
 import argparse
+import importlib
 import os
 import sys
+from dataclasses import dataclass
 from typing import Callable, NoReturn, Sequence
 
-from .errors import UsageError
-
-PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+from osdk_conformance.core.errors import UsageError
 
 
-def _decode(args: argparse.Namespace) -> int:
-    from .decode import run_decode
+@dataclass(frozen=True)
+class Command:
+    path: tuple[str, ...]      # ("spec", "trace") is `osdkc spec trace`
+    help: str
+    module: str                # under osdk_conformance
+    run: str                   # the run function: args -> exit status
+    arguments: str = "add_arguments"
 
-    return run_decode(args)
-
-
-def _spec_trace(args: argparse.Namespace) -> int:
-    from .trace import run_trace
-
-    return run_trace(args)
-
-
-def _spec_check(args: argparse.Namespace) -> int:
-    from .speccheck import run_spec_check
-
-    return run_spec_check(args)
+    def load(self, name: str) -> Callable:
+        return getattr(importlib.import_module(f"osdk_conformance.{self.module}"), name)
 
 
-def _kit(args: argparse.Namespace) -> int:
-    from .kit import run_kit
+GROUPS = {
+    "spec": "inspect and check the specification",
+    "vectors": "check the golden vectors and their coverage of the spec",
+    "sdk": "DJI's Onboard-SDK itself against the kit (needs a checkout of it)",
+}
 
-    return run_kit(args)
-
-
-def _run(args: argparse.Namespace) -> int:
-    from .runner import run_command
-
-    return run_command(args)
-
-
-def _vectors(args: argparse.Namespace) -> int:
-    from .vectors import run_vectors
-
-    return run_vectors(args)
-
-
-def _sim(args: argparse.Namespace) -> int:
-    from .sim import run_sim
-
-    return run_sim(args)
-
-
-def _device(args: argparse.Namespace) -> int:
-    from .device import run_device
-
-    return run_device(args)
-
-
-def _soak(args: argparse.Namespace) -> int:
-    from .soak import run_soak
-
-    return run_soak(args)
+COMMANDS = (
+    Command(("decode",), "find and decode frames in a byte stream, one JSON object per line",
+            "reference.decode", "run_decode"),
+    Command(("spec", "trace"), "map every seed entry to the spec element that carries it",
+            "traceability.trace", "run_trace"),
+    Command(("spec", "check"), "compile the .ksy files, validate rules and trace, check generated/",
+            "traceability.check", "run_spec_check"),
+    Command(("kit",), "run the conformance kit (spec checks and worked examples)", "kit", "run_kit"),
+    Command(("run",), "replay the golden vectors against an implementation (conformance/PROTOCOL.md)",
+            "harness.runner", "run_command"),
+    Command(("vectors", "check"), "schema, manifest hashes, unique ids, and every case against the spec",
+            "harness.vectors", "run_vectors", "add_check_arguments"),
+    Command(("vectors", "coverage"), "cases per spec rule and errata entry; fails when one has none",
+            "harness.vectors", "run_vectors", "add_coverage_arguments"),
+    Command(("selftest",), "mutation check: every deliberately broken implementation must fail the vectors",
+            "harness.selftest", "run_selftest"),
+    Command(("fuzz",), "differential fuzzing of two or more implementations (hypothesis)",
+            "harness.fuzz", "run_fuzz"),
+    Command(("sim",), "simulated flight controller on a pseudo-terminal or TCP port",
+            "sim.simulator", "run_sim"),
+    Command(("device",), "acceptance suite against a flight controller on a serial port (or a capture)",
+            "device.acceptance", "run_device"),
+    Command(("soak",), "benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost",
+            "device.soak", "run_soak"),
+    Command(("sdk", "host-test"), "build DJI's host stack with our driver, run a whole session "
+                                  "against osdkc sim for each profile", "sdk.host", "run_host_test"),
+    Command(("bench",), "benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak",
+            "bench.command", "run_bench"),
+)
 
 
 class Parser(argparse.ArgumentParser):
@@ -73,107 +75,51 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
-def _add_seed_argument(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--seed", metavar="FILE",
-                   help="the seed text spec/trace.yaml maps (not in the repository; default: $OSDK_SEED). "
-                        "Without one, the trace's checks against the seed are skipped, and the output says so")
+def _selected(argv: Sequence[str]) -> tuple[str, ...]:
+    """The command words of a command line: what to load before parsing it."""
+    return tuple(a for a in argv if not a.startswith("-"))[:2]
 
 
-def build_parser() -> argparse.ArgumentParser:
-    ap = Parser(
-        prog="osdkc",
-        description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.",
-    )
-    sub = ap.add_subparsers(dest="command", metavar="COMMAND")
+def _subparsers(p: argparse.ArgumentParser, dest: str, metavar: str) -> argparse._SubParsersAction:
+    sub = p.add_subparsers(dest=dest, metavar=metavar)
     sub.required = True
+    return sub
 
-    d = sub.add_parser("decode", help="find and decode frames in a byte stream, one JSON object per line")
-    d.add_argument("--profile", required=True, choices=PROFILES, help="broadcast wire profile of the flight controller")
-    src = d.add_mutually_exclusive_group(required=True)
-    src.add_argument("--hex", help="the bytes as hex (spaces and colons allowed)")
-    src.add_argument("file", nargs="?", help="a file of raw bytes or a pcapng capture (osdkc device), or - for standard input")
-    d.add_argument("--direction", choices=("rx", "tx", "both"), default="rx",
-                   help="of a capture: bytes received (default), sent, or both, each event marked with its direction")
-    d.add_argument("--pretty", action="store_true", help="indent each JSON object")
-    d.set_defaults(func=_decode)
 
-    s = sub.add_parser("spec", help="inspect and check the specification")
-    ssub = s.add_subparsers(dest="spec_command", metavar="SPEC_COMMAND")
-    ssub.required = True
-    t = ssub.add_parser("trace", help="map every seed entry to the spec element that carries it")
-    t.add_argument("--json", action="store_true", help="print the table as JSON")
-    _add_seed_argument(t)
-    t.set_defaults(func=_spec_trace)
-    c = ssub.add_parser("check", help="compile the .ksy files, validate rules and trace, check generated/")
-    _add_seed_argument(c)
-    c.set_defaults(func=_spec_check)
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The whole parser, or (given the command line) one whose only complete
+    subcommand is the one the command line names."""
+    from osdk_conformance.core.rules import profile_names  # only for the command being run (start-up)
 
-    k = sub.add_parser("kit", help="run the conformance kit (spec checks and worked examples)")
-    _add_seed_argument(k)
-    k.set_defaults(func=_kit)
-
-    from .runner import add_arguments as add_run_arguments
-
-    r = sub.add_parser("run", help="replay the golden vectors against an implementation (conformance/PROTOCOL.md)")
-    add_run_arguments(r, PROFILES)
-    r.set_defaults(func=_run)
-
-    v = sub.add_parser("vectors", help="check the golden vectors and their coverage of the spec")
-    vsub = v.add_subparsers(dest="vectors_command", metavar="VECTORS_COMMAND")
-    vsub.required = True
-    vc = vsub.add_parser("check", help="schema, manifest hashes, unique ids, and every case against the spec")
-    vc.add_argument("--dir", help="the vectors directory (default: vectors/)")
-    vc.add_argument("--no-spec", action="store_true", help="skip re-running the reference on every case")
-    vc.set_defaults(func=_vectors)
-    vv = vsub.add_parser("coverage", help="cases per spec rule and errata entry; fails when one has none")
-    vv.add_argument("--dir", help="the vectors directory (default: vectors/)")
-    vv.set_defaults(func=_vectors)
-
-    from . import fuzz, selftest  # both import only the standard library until they run
-
-    st = sub.add_parser("selftest", help="mutation check: every deliberately broken implementation must fail the vectors")
-    selftest.add_arguments(st)
-    st.set_defaults(func=selftest.run_selftest)
-    fz = sub.add_parser("fuzz", help="differential fuzzing of two or more implementations (hypothesis)")
-    fuzz.add_arguments(fz, PROFILES)
-    fz.set_defaults(func=fuzz.run_fuzz)
-    from . import device, sim, soak  # standard library and osdk_conformance only until they run
-
-    sm = sub.add_parser("sim", help="simulated flight controller on a pseudo-terminal or TCP port")
-    sim.add_arguments(sm, PROFILES)
-    sm.set_defaults(func=_sim)
-    dv = sub.add_parser("device", help="acceptance suite against a flight controller on a serial port (or a capture)")
-    device.add_arguments(dv, PROFILES)
-    dv.set_defaults(func=_device)
-    sk = sub.add_parser("soak", help="benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost")
-    soak.add_arguments(sk, PROFILES)
-    sk.set_defaults(func=_soak)
-    from . import sdk_host  # standard library and osdk_conformance only until it runs
-
-    sd = sub.add_parser("sdk", help="DJI's Onboard-SDK itself against the kit (needs a checkout of it)")
-    sdsub = sd.add_subparsers(dest="sdk_command", metavar="SDK_COMMAND")
-    sdsub.required = True
-    ht = sdsub.add_parser("host-test", help="build DJI's host stack with our driver, run a whole session "
-                                            "against osdkc sim for each profile")
-    sdk_host.add_arguments(ht, PROFILES)
-    ht.set_defaults(func=sdk_host.run_host_test)
-    from . import bench  # no third-party import until it runs
-
-    bn = sub.add_parser("bench", help="benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak")
-    bench.add_arguments(bn, PROFILES)
-    bn.set_defaults(func=bench.run_bench)
+    words = None if argv is None else _selected(argv)
+    ap = Parser(prog="osdkc",
+                description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.")
+    top = _subparsers(ap, "command", "COMMAND")
+    groups: dict[str, argparse._SubParsersAction] = {}
+    for cmd in COMMANDS:
+        if len(cmd.path) == 1:
+            p = top.add_parser(cmd.path[0], help=cmd.help)
+        else:
+            group, name = cmd.path
+            if group not in groups:
+                g = top.add_parser(group, help=GROUPS[group])
+                groups[group] = _subparsers(g, f"{group}_command", f"{group.upper()}_COMMAND")
+            p = groups[group].add_parser(name, help=cmd.help)
+        if words is None or words[:len(cmd.path)] == cmd.path:
+            cmd.load(cmd.arguments)(p, profile_names())
+            p.set_defaults(command_row=cmd)
     return ap
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    ap = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = ap.parse_args(argv)
+        args = build_parser(argv).parse_args(argv)
     except SystemExit as e:  # --help, or a bad command line already reported
         return e.code if isinstance(e.code, int) else 2
-    func: Callable[[argparse.Namespace], int] = args.func
+    cmd: Command = args.command_row
     try:
-        return func(args)
+        return cmd.load(cmd.run)(args)
     except UsageError as e:
         print(f"osdkc: {e}", file=sys.stderr)
         return 2

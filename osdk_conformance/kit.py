@@ -13,15 +13,26 @@ reports/device.html, capture in reports/device.pcapng).
 from __future__ import annotations
 
 import argparse
-from typing import Callable
+from typing import Callable, Sequence
 
-from . import model
-from .errors import UsageError
-from .paths import ROOT
-from . import status_readme
-from .runner import ALL
-from .speccheck import run_spec_check
-from .worked_examples import WORKED_FRAMES, WorkedFrame, lookup
+from kaitaistruct import BytesIO, KaitaiStream
+from osdk_construct.frame import build_frame
+from osdk_kaitai.osdk_frame import OsdkFrame
+from osdk_kaitai.osdk_payload import OsdkPayload
+
+from osdk_conformance.core import model
+from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.rules import profile_names
+from osdk_conformance.device.acceptance import add_arguments as device_arguments, run_device
+from osdk_conformance.harness import status_readme
+from osdk_conformance.harness.runner import ALL, add_arguments as run_arguments, run_command
+from osdk_conformance.harness.selftest import add_arguments as selftest_arguments, run_selftest
+from osdk_conformance.reference.decode import decode_events
+from osdk_conformance.reference.worked_examples import WORKED_FRAMES, WorkedFrame, lookup
+from osdk_conformance.sim.simulator import spawned
+from osdk_conformance.traceability.check import run_spec_check
+from osdk_conformance.traceability.trace import add_seed_argument
 
 
 def _mismatches(frame_model: dict, wf: WorkedFrame) -> list[str]:
@@ -38,15 +49,11 @@ def _mismatches(frame_model: dict, wf: WorkedFrame) -> list[str]:
 
 
 def _construct_encode(wf: WorkedFrame) -> list[str]:
-    from osdk_construct.frame import build_frame
-
     built = build_frame(**wf.build).hex()
     return [] if built == wf.hex else [f"built {built}"]
 
 
 def _construct_decode(wf: WorkedFrame) -> list[str]:
-    from .decode import decode_events
-
     events = list(decode_events([bytes.fromhex(wf.hex)], wf.profile))
     if len(events) != 1 or events[0]["kind"] != "frame":
         return [f"decoded to {model.dumps(events)}"]
@@ -54,10 +61,6 @@ def _construct_decode(wf: WorkedFrame) -> list[str]:
 
 
 def _kaitai_decode(wf: WorkedFrame) -> list[str]:
-    from kaitaistruct import BytesIO, KaitaiStream
-    from osdk_kaitai.osdk_frame import OsdkFrame
-    from osdk_kaitai.osdk_payload import OsdkPayload
-
     profile = OsdkPayload.Profile[wf.profile.replace("-", "_").replace(".", "_")]
     parsed = OsdkFrame(profile, KaitaiStream(BytesIO(bytes.fromhex(wf.hex))))
     return _mismatches(model.from_kaitai(parsed), wf)
@@ -73,28 +76,36 @@ IMPLEMENTATIONS: list[tuple[str, Callable[[WorkedFrame], list[str]]]] = [
 REPORTS = ROOT / "reports"
 
 
-def _osdkc(*argv: str) -> int:
-    from .cli import main
-
-    print(f"== osdkc {' '.join(argv)}", flush=True)
-    return main(list(argv))
+def _command(name: str, add_arguments: Callable, run: Callable, *argv: str) -> int:
+    """Run one osdkc command the way the command line would, through its own
+    argument parser (so its defaults and checks apply) and run function."""
+    print(f"== osdkc {name} {' '.join(argv)}".rstrip(), flush=True)
+    parser = argparse.ArgumentParser(prog=f"osdkc {name}")
+    add_arguments(parser, profile_names())
+    try:
+        return run(parser.parse_args(list(argv)))
+    except UsageError as e:
+        print(f"osdkc: {e}")
+        return 2
 
 
 def _acceptance_on_simulator() -> int:
     """`osdkc device --active` against `osdkc sim` on a pseudo-terminal: what
     a bench acceptance run of a real flight controller does, without one."""
-    from .sim import spawned
-
     app_id = "1234"  # what the simulated FC accepts, as a configured app would be
     print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc device --active", flush=True)
     try:
         with spawned("--profile", "a3-fw3.1", "--app-id", app_id) as (url, _):
-            return _osdkc("device", "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
+            return _command("device", device_arguments, run_device, "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
                           "--app-id", app_id, "--quiet", "--capture", str(REPORTS / "device.pcapng"),
                           "--html", str(REPORTS / "device.html"), "--junit", str(REPORTS / "device.xml"))
     except UsageError as e:
         print(f"  {e}")
         return 1
+
+
+def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
+    add_seed_argument(p)
 
 
 def run_kit(args: argparse.Namespace | None = None) -> int:
@@ -111,9 +122,10 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
             passed += not problems
             failed += bool(problems)
     REPORTS.mkdir(exist_ok=True)
-    steps = [("run", "--impl", ALL, "--report-dir", str(REPORTS)), ("selftest",)]
-    for argv in steps:
-        ok = _osdkc(*argv) == 0
+    steps = [("run", run_arguments, run_command, "--impl", ALL, "--report-dir", str(REPORTS)),
+             ("selftest", selftest_arguments, run_selftest)]
+    for step in steps:
+        ok = _command(*step) == 0
         passed += ok
         failed += not ok
     status_readme.update(REPORTS / "conformance.json")

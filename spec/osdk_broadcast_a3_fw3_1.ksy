@@ -1,3 +1,4 @@
+# Generated from spec/rules.yaml (profiles, broadcast_items) by tools/gen_profile_ksy.py: do not edit.
 meta:
   id: osdk_broadcast_a3_fw3_1
   title: DJI Onboard SDK OPEN protocol - flight data broadcast, profile a3-fw3.1

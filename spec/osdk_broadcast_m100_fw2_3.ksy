@@ -1,3 +1,4 @@
+# Generated from spec/rules.yaml (profiles, broadcast_items) by tools/gen_profile_ksy.py: do not edit.
 meta:
   id: osdk_broadcast_m100_fw2_3
   title: DJI Onboard SDK OPEN protocol - flight data broadcast, profile m100-fw2.3

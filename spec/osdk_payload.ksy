@@ -7,9 +7,11 @@ meta:
   endian: le
   imports:
     - osdk_movement_control
+    # --- generated from rules.yaml profiles by tools/gen_profile_ksy.py (imports): do not edit ---
     - osdk_broadcast_m100_fw2_3
     - osdk_broadcast_m100_fw3_1
     - osdk_broadcast_a3_fw3_1
+    # --- end generated ---
 doc: |
   The value carried in a frame's DATA, chosen by command set and id. A
   command frame names its set and id itself; an ACK frame does not (it
@@ -101,8 +103,10 @@ types:
         doc: Version name, ASCII, NUL-padded.
     instances:
       has_version_id:
-        value: profile != profile::m100_fw2_3
         doc: true on FW 3.1 profiles, whose reply carries the 11-byte version ID.
+        # --- generated from rules.yaml profiles by tools/gen_profile_ksy.py (version id): do not edit ---
+        value: profile != profile::m100_fw2_3
+        # --- end generated ---
   activation_request:
     doc: Activation (set 0x00, id 0x01).
     seq:
@@ -171,9 +175,11 @@ types:
         type:
           switch-on: profile
           cases:
+            # --- generated from rules.yaml profiles by tools/gen_profile_ksy.py (broadcast cases): do not edit ---
             profile::m100_fw2_3: osdk_broadcast_m100_fw2_3
             profile::m100_fw3_1: osdk_broadcast_m100_fw3_1
             profile::a3_fw3_1: osdk_broadcast_a3_fw3_1
+            # --- end generated ---
   lost_control:
     doc: Control authority lost, pushed by the flight controller (set 0x02, id 0x01).
     seq:
@@ -193,6 +199,7 @@ types:
         size-eos: true
         doc: The value bytes.
 enums:
+  # --- generated from rules.yaml profiles by tools/gen_profile_ksy.py (profile enum): do not edit ---
   profile:
     0:
       id: m100_fw2_3
@@ -203,6 +210,7 @@ enums:
     2:
       id: a3_fw3_1
       doc: a3-fw3.1, A3, N3 and M600 with firmware 3.1.
+  # --- end generated ---
   version_ack:
     0x0000: activated
     0xff01: not_activated

@@ -11,12 +11,13 @@ import sys
 
 import pytest
 
-from osdk_conformance import bench_corpus
-from osdk_conformance.bench_decode import BASELINE, cross_check, impl_names
-from osdk_conformance.bench_report import BEGIN, END
+from osdk_conformance.bench import corpus as bench_corpus
+from osdk_conformance.bench.decode import BASELINE, cross_check, impl_names
+from osdk_conformance.bench.report import BEGIN, END
 from osdk_conformance.cli import main
-from osdk_conformance.decode import decode_events
-from osdk_conformance.paths import ROOT
+from osdk_conformance.reference.decode import decode_events
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.rules import profile_names
 
 SECONDS = 3.0   # of traffic per corpus: enough for every kind of frame and fault, quick to decode
 OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
@@ -57,7 +58,7 @@ def test_corpus_sizes_follow_from_their_rates():
     hour = bench_corpus.corpus("a3-hour", SECONDS)
     assert (hour.frames, hour.errors, hour.garbage_bytes) == (300, 0, 0)   # 100 Hz, every frame intact
     assert hour.bytes == 300 * (12 + 2 + 2 + 198 + 4)                        # every a3-fw3.1 item in each
-    for profile in ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1"):
+    for profile in profile_names():
         mixed = bench_corpus.corpus(f"{profile}-mixed", SECONDS)
         # 50 Hz of broadcasts (intact or broken) and as many movement commands, plus the start-up exchanges
         assert mixed.frames + mixed.errors == 2 * 150 + 2 * 5
@@ -98,7 +99,7 @@ def test_markdown_replaces_only_its_block(tmp_path, bench_run):
     _, out = bench_run
     doc = tmp_path / "PERFORMANCE.md"
     doc.write_text(f"# Title\n\nprose before\n\n{BEGIN}\nold numbers\n{END}\n\nprose after\n")
-    from osdk_conformance.bench_report import markdown, write_markdown
+    from osdk_conformance.bench.report import markdown, write_markdown
 
     result = json.loads((out / "bench.json").read_text())
     write_markdown(doc, markdown(result))
@@ -155,7 +156,7 @@ def test_bad_arguments_are_one_line_usage_errors(args, message, capsys):
 def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     """`--runs 0` measures fault detection only: the healthy-run target is
     "not measured", not MISSED; a short or failed healthy batch is MISSED."""
-    from osdk_conformance.bench_report import _reliability_targets, _verdict
+    from osdk_conformance.bench.report import _reliability_targets, _verdict
 
     faults = {"noise": {"runs": 20, "detected": 20, "missed": []}}
     none = {"runs": 0, "passed": 0, "under_load": 0, "retransmissions": 0}

@@ -23,9 +23,9 @@ from pathlib import Path
 
 import pytest
 
-from osdk_conformance import testee as testee_client
-from osdk_conformance.runner import BUNDLED_IMPLS, impl_argv
-from osdk_conformance.vectors import VECTORS_DIR, load_cases
+from osdk_conformance.harness import testee as testee_client
+from osdk_conformance.harness.runner import BUNDLED_IMPLS, impl_argv
+from osdk_conformance.harness.vectors import VECTORS_DIR, load_cases
 
 IMPLS = list(BUNDLED_IMPLS)
 PROFILES = ("m100-fw2.3", "a3-fw3.1")  # the two ends: the oldest layout, the newest

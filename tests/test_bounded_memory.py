@@ -3,7 +3,7 @@ input; a gibibyte of random bytes decodes without a crash in bounded memory.
 
 Every bundled implementation runs its bench mode (conformance/PROTOCOL.md:
 `<argv> --bench - --profile P`) on the hostile streams of
-osdk_conformance.hostile_streams, fed through a pipe, once with a short and
+osdk_conformance.harness.hostile_streams, fed through a pipe, once with a short and
 once with a long stream of the same kind. Its peak resident set comes from
 conformance/baseline's osdk-peak-rss (the meter `osdkc bench` uses): the kernel's peak
 RSS of a direct child includes the pages of the process it was forked from
@@ -74,10 +74,10 @@ from functools import cache
 
 import pytest
 
-from osdk_conformance import hostile_streams
-from osdk_conformance.deframe import MAX_LEN, deframe
-from osdk_conformance.paths import ROOT
-from osdk_conformance.runner import BUNDLED_IMPLS, impl_argv
+from osdk_conformance.harness import hostile_streams
+from osdk_conformance.core.deframe import MAX_LEN, deframe
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.harness.runner import BUNDLED_IMPLS, impl_argv
 
 MiB = 1 << 20
 GiB = 1 << 30
@@ -88,7 +88,7 @@ GIB_GROWTH_BOUND = 64 * MiB  # from the short random stream to the gibibyte (mod
 PROFILE = "a3-fw3.1"
 PYTHON_IMPLS = ("construct", "kaitai-python")
 FULL_GIB = os.environ.get("OSDK_FULL_GIB") == "1"
-from osdk_conformance.bench_child import PEAK_RSS_BIN  # noqa: E402 - the one peak-RSS meter
+from osdk_conformance.bench.child import PEAK_RSS_BIN  # noqa: E402 - the one peak-RSS meter
 
 # (short, long) stream lengths by kind.
 LENGTHS = {

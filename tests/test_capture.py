@@ -14,12 +14,12 @@ import tracemalloc
 
 import pytest
 
-from osdk_conformance.capture import (EPB_TYPE, IDB_TYPE, LINKTYPE_USER0, RX, SHB_TYPE, TX, CaptureError,
+from osdk_conformance.core.capture import (EPB_TYPE, IDB_TYPE, LINKTYPE_USER0, RX, SHB_TYPE, TX, CaptureError,
                                       CaptureReader, CaptureWriter, read_capture)
-from osdk_conformance.decode import received_bytes
-from osdk_conformance.deframe import split_chunks
-from osdk_conformance.sim import spawned
-from osdk_conformance.worked_examples import BROADCAST, MOVEMENT
+from osdk_conformance.reference.decode import received_bytes
+from osdk_conformance.core.deframe import split_chunks
+from osdk_conformance.sim.simulator import spawned
+from osdk_conformance.reference.worked_examples import BROADCAST, MOVEMENT
 from osdk_construct import build_frame
 
 

@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-from osdk_conformance.worked_examples import BROADCAST, MOVEMENT, WORKED_FRAMES, lookup
+from osdk_conformance.reference.worked_examples import BROADCAST, MOVEMENT, WORKED_FRAMES, lookup
 from osdk_construct import build_frame
 
 
@@ -132,7 +132,7 @@ def test_kit_worked_frames_pass_through_every_bundled_implementation():
 # ---- messages -------------------------------------------------------------------------
 
 def test_ack_codes_show_in_hex_with_the_spec_name():
-    from osdk_conformance.commands import ack_code_text
+    from osdk_conformance.core.commands import ack_code_text
     from osdk_construct.payload import payload
 
     ack = lambda cmd_set, cmd_id, value: payload(cmd_set, cmd_id, True, "a3-fw3.1").parse(value).body.ack_code
@@ -145,8 +145,8 @@ def test_ack_codes_show_in_hex_with_the_spec_name():
 def test_a_device_silent_from_the_start_fails_the_stall_check_and_measures_no_rate():
     import time
 
-    from osdk_conformance.device import Options, passive_results
-    from osdk_conformance.device_analysis import Analyzer
+    from osdk_conformance.device.checks import Options, passive_results
+    from osdk_conformance.device.analysis import Analyzer
 
     an = Analyzer("a3-fw3.1")
     an.finish(time.time())  # a live run ends at the wall clock time; no byte ever arrived

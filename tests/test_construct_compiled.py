@@ -18,13 +18,14 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from osdk_conformance import model
-from osdk_conformance.deframe import Frame, deframe
+from osdk_conformance.core import model
+from osdk_conformance.core.deframe import Frame, deframe
+from osdk_conformance.core.rules import profile_names
 from osdk_construct import build_frame, compiled, osdk_frame, osdk_payload
 from osdk_construct.payload import broadcast as broadcast_value
 
 VECTORS = Path(__file__).resolve().parent.parent / "vectors"
-PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+PROFILES = profile_names()
 EVERY_NTH_FLAG_SUBSET = 16  # that category alone holds some 20,000 similar broadcasts
 
 

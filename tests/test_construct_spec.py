@@ -5,6 +5,7 @@ The agreement with the Kaitai spec is tested in test_kaitai_vs_construct.py.
 """
 from __future__ import annotations
 
+import dataclasses
 import random
 import struct
 
@@ -14,8 +15,9 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import osdk_construct as oc
-from osdk_conformance import ksy
-from osdk_construct import broadcast, enums, payload
+from osdk_conformance.core import ksy
+from osdk_conformance.core.rules import default_rules
+from osdk_construct import broadcast, broadcast_items, enums, payload
 from osdk_construct.floats import F32, F64, F32le, F64le
 from osdk_construct.frame import header
 
@@ -110,6 +112,50 @@ def test_full_broadcast_sizes_match_the_profiles():
         9 + 16 + 12 + 13 + 12 + 25 + 6 + 12 + 13 + 1 + 1 + 2,
         9 + 16 + 12 + 13 + 12 + 25 + 32 + 44 + 6 + 12 + 13 + 1 + 1 + 2,
     ]
+
+
+def _size(con) -> int:
+    return len(con.build(con.parse(bytes(64))))
+
+
+@pytest.mark.parametrize("name", PROFILES)
+def test_item_sizes_agree_with_the_rules(name):
+    """This package's own item layouts give the sizes the rules compute from
+    osdk_broadcast_items.ksy (the two transcriptions of the items agree)."""
+    p = default_rules().profile(name)
+    assert {item: _size(con) for item, con in broadcast.ITEMS[p.value]} == dict(p.item_sizes)
+
+
+# --- the profiles are composed as spec/rules.yaml says ---------------------------------------
+
+def test_profiles_come_from_the_rules():
+    r = default_rules()
+    assert list(broadcast.ITEMS) == [r.profile(n).value for n in r.profile_names] == [0, 1, 2]
+    assert enums.PROFILE_IDS == {n: r.profile(n).value for n in r.profile_names}
+    assert enums.PROFILE == {r.profile(n).ksy_name: r.profile(n).value for n in r.profile_names}
+    for name in r.profile_names:
+        p = r.profile(name)
+        assert [item for item, _ in broadcast.ITEMS[p.value]] == list(p.flag_bits)
+        assert broadcast.NAMES[p.value] == p.ksy_name
+        assert getattr(oc, f"osdk_broadcast_{p.ksy_name}") is broadcast.for_profile(name)
+        assert getattr(broadcast, p.ksy_name) is broadcast.for_profile(p.value)
+
+
+def test_item_constructs_are_found_by_type_name_and_take_params_by_name():
+    fw31 = default_rules().profile("m100-fw3.1")
+    short_gimbal = dataclasses.replace(fw31, item_params={**fw31.item_params, "gimbal": {"has_limit_byte": False}})
+    layout = dict(broadcast.bit_order(short_gimbal))
+    assert layout["gimbal"] is broadcast_items.gimbal(has_limit_byte=False)
+    assert _size(layout["gimbal"]) == 12 and _size(layout["time_stamp"]) == 9
+    assert layout["acceleration"] is layout["angular_rate"] is broadcast_items.vector3f
+    assert layout["battery"] is construct.Int8ul
+
+
+def test_a_profile_with_sixteen_items_has_no_reserved_flags():
+    con = broadcast._profile(tuple((f"item{n}", construct.Int8ul) for n in range(16)))
+    parsed = con.parse(b"\xff\xff" + bytes(range(16)))
+    assert [parsed[f"item{n}"] for n in range(16)] == list(range(16))
+    assert "reserved_flags" not in parsed
 
 
 @given(raw=st.binary(min_size=1, max_size=40))

@@ -1,4 +1,4 @@
-"""The frame checksums (osdk_conformance.crc).
+"""The frame checksums (osdk_conformance.core.crc).
 
 Checked four ways: the check values over b"123456789" that rules.yaml and
 PROTOCOL-FACTS §1 give; the residue property the SDK relies on (the CRC over
@@ -17,7 +17,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from osdk_conformance import crc, rules
+from osdk_conformance.core import crc, rules
 
 CHECK_INPUT = b"123456789"
 

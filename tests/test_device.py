@@ -16,14 +16,15 @@ import time
 
 import pytest
 
-from osdk_conformance.bench_reliability import FAULT_CASES
-from osdk_conformance.sim import spawned
+from osdk_conformance.bench.reliability import FAULT_CASES
+from osdk_conformance.core.rules import profile_names
+from osdk_conformance.sim.simulator import spawned
 
 # Measures rates and timing of a live simulator: run alone, never beside
 # CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
 pytestmark = pytest.mark.realtime
 
-PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+PROFILES = profile_names()
 KEY = "00112233445566778899aabbccddeeff" * 2
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
 # Clean runs share the machine with other tests: allow scheduling noise in
@@ -198,9 +199,9 @@ def test_stalled_stream_is_a_stall_verdict():
 
 def test_stall_limit_stretches_for_a_slow_configuration():
     """An FC configured with every item at 1 Hz is silent a second between frames by design."""
-    from osdk_conformance.device import Options, stall_limit
-    from osdk_conformance.device_analysis import Analyzer
-    from osdk_conformance.rules import profile
+    from osdk_conformance.device.checks import Options, stall_limit
+    from osdk_conformance.device.analysis import Analyzer
+    from osdk_conformance.core.rules import profile
 
     items = profile("a3-fw3.1").flag_bits
     opts = Options("a3-fw3.1")

@@ -22,10 +22,10 @@ from pathlib import Path
 
 import pytest
 
-from osdk_conformance.capture import read_capture
-from osdk_conformance.device_active import EXIT_BY_SIGNAL, HOLD_ENV, PHASES, RAISE_ENV
-from osdk_conformance.device_wire import commands_sent
-from osdk_conformance.sim import spawned
+from osdk_conformance.core.capture import read_capture
+from osdk_conformance.device.active import EXIT_BY_SIGNAL, HOLD_ENV, PHASES, RAISE_ENV
+from osdk_conformance.core.wire import commands_sent
+from osdk_conformance.sim.simulator import spawned
 
 pytestmark = pytest.mark.realtime
 

@@ -22,13 +22,14 @@ import tty
 
 import pytest
 
-from osdk_conformance.capture import RX, TX, CaptureWriter, read_capture
-from osdk_conformance.deframe import Deframer, Frame
-from osdk_conformance.device import Options, Port, stream_checks
-from osdk_conformance.device_active import Commander
-from osdk_conformance.device_analysis import Analyzer
-from osdk_conformance.device_wire import encode, open_frame
-from osdk_conformance.sim import spawned
+from osdk_conformance.core.capture import RX, TX, CaptureWriter, read_capture
+from osdk_conformance.core.deframe import Deframer, Frame
+from osdk_conformance.device.checks import Options, stream_checks
+from osdk_conformance.device.port import Port
+from osdk_conformance.device.active import Commander
+from osdk_conformance.device.analysis import Analyzer
+from osdk_conformance.core.wire import encode, open_frame
+from osdk_conformance.sim.simulator import spawned
 
 PROFILE = "a3-fw3.1"
 REQUESTS = 1000
@@ -126,7 +127,7 @@ def test_the_capture_holds_every_byte_the_live_run_counted(tmp_path):
 
 @functools.lru_cache(maxsize=1)
 def _sim():
-    from osdk_conformance.sim import SimConfig, Simulator
+    from osdk_conformance.sim.simulator import SimConfig, Simulator
 
     return Simulator(SimConfig(profile=PROFILE), transport=None)
 
@@ -154,8 +155,8 @@ def test_rates_are_measured_on_the_flight_controllers_clock(fc_hz, arrival, expe
 
 
 def test_a_frame_at_the_new_rates_in_the_read_of_the_ack_is_not_held_against_the_old_rates():
-    from osdk_conformance.device_active import rate_codes
-    from osdk_conformance.rules import profile
+    from osdk_conformance.device.active import rate_codes
+    from osdk_conformance.core.rules import profile
 
     prof = profile(PROFILE)
     an = Analyzer(PROFILE)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from osdk_conformance.fuzz import FUZZ_OPS, suite_document
+from osdk_conformance.harness.fuzz import FUZZ_OPS, suite_document
 
 ROOT = Path(__file__).resolve().parents[1]
 MUTANT_TESTEE = ROOT / "conformance" / "testees" / "mutant_testee.py"
@@ -49,7 +49,7 @@ def test_bundled_implementations_agree():
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "no disagreement" in proc.stderr and "Traceback" not in proc.stderr
     assert "300 examples in" in proc.stderr
-    from osdk_conformance.runner import BUNDLED_IMPLS
+    from osdk_conformance.harness.runner import BUNDLED_IMPLS
 
     assert proc.stderr.count(" vs ") == len(BUNDLED_IMPLS) - 1
     for op in FUZZ_OPS:  # the summary gives a rate for every operation

@@ -116,7 +116,7 @@ def test_go_corpus_file_reads_as_its_bytes(tmp_path):
 
 
 def test_stream_artifact_becomes_a_vector_with_the_reference_answer(tmp_path):
-    from osdk_conformance.reference import answer
+    from osdk_conformance.reference.codec import answer
 
     worked = bytes.fromhex("aa230000000000003412e17201034b0000803f000000c00000003f0000f041fcdb01ba")
     broken = worked[:20] + b"\xaa" + worked[21:] + worked[:13]  # a bad CRC-32, a truncated tail

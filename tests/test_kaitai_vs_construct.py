@@ -22,12 +22,14 @@ Kaitai Python runtime causes itself: see
 `same_float_modulo_kaitai_snan_quieting`.
 
 The message structures are generated from the .ksy files and their enums
-(via osdk_conformance.ksy), not from osdk_construct, so the two sides do not
+(via osdk_conformance.core.ksy), not from osdk_construct, so the two sides do not
 share a table that could be wrong in the same way.
 """
 from __future__ import annotations
 
+import importlib
 import math
+import re
 import struct
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -40,13 +42,11 @@ from hypothesis import strategies as st
 from kaitaistruct import KaitaiStream, KaitaiStructError
 
 import osdk_construct
-from osdk_conformance import ksy, model
+from osdk_conformance.core import ksy, model
+from osdk_conformance.core.rules import profile as rules_profile, profile_names
 from osdk_construct.control import control_mode as c_control_mode
 from osdk_construct.control import movement_control as c_movement_control
 from osdk_construct.floats import F32, F64
-from osdk_kaitai.osdk_broadcast_a3_fw3_1 import OsdkBroadcastA3Fw31
-from osdk_kaitai.osdk_broadcast_m100_fw2_3 import OsdkBroadcastM100Fw23
-from osdk_kaitai.osdk_broadcast_m100_fw3_1 import OsdkBroadcastM100Fw31
 from osdk_kaitai.osdk_control_mode import OsdkControlMode
 from osdk_kaitai.osdk_frame import OsdkFrame
 from osdk_kaitai.osdk_movement_control import OsdkMovementControl
@@ -212,11 +212,6 @@ class Source:
         return self.choice(names) if self.flag() else self.uint(bits)
 
 
-def ksy_enum(file_id: str, name: str, bits: int) -> Callable[[Source], object]:
-    names = tuple(sorted(KSY.enums[(file_id, name)].values()))
-    return lambda s: s.enum(names, bits)
-
-
 def fields(**makers: Callable[[Source], object]) -> Callable[[Source], dict]:
     """A struct generator: one generator per field, called in order."""
     return lambda s: {name: make(s) for name, make in makers.items()}
@@ -226,65 +221,114 @@ def u(bits: int):
     return lambda s: s.uint(bits)
 
 
-def i(bits: int):
-    return lambda s: s.sint(bits)
-
-
 def raw(size: int):
     return lambda s: s.bytes(size)
 
 
-f32, f64, flag = Source.f32, Source.f64, Source.flag
+# --- generators read from the .ksy types --------------------------------------------
+#
+# A struct's generator is built from its type's seq, so adding a broadcast item
+# or a field to spec/osdk_broadcast_items.ksy needs no change here. Each kind of
+# field draws the values that try a decoder hardest: floats as raw IEEE patterns
+# and specials (Source.f32/f64), integers over their whole width, an enum field
+# a name or any integer its width holds, b1 a flag, other bit fields (reserved
+# ones included) a plain uint.
 
-CONTROL_MODE = fields(
-    stable_mode=ksy_enum("osdk_control_mode", "stable_mode", 1),
-    horizontal_frame=ksy_enum("osdk_control_mode", "horizontal_frame", 2),
-    yaw_logic=ksy_enum("osdk_control_mode", "yaw_logic", 1),
-    vertical_logic=ksy_enum("osdk_control_mode", "vertical_logic", 2),
-    horizontal_logic=ksy_enum("osdk_control_mode", "horizontal_logic", 2),
-)
+_INT_TYPE = re.compile(r"([us])([1248])")
+_BIT_TYPE = re.compile(r"b([1-9]\d*)")
+# Keys of a seq entry the generators understand; any other (repeat, contents,
+# valid, process, ...) would need a generator that honours it, so it is refused
+# rather than drawn wrongly.
+_FIELD_KEYS = frozenset({"id", "type", "enum", "if", "size", "doc", "doc-ref"})
 
-MOVEMENT_CONTROL = fields(control_mode=CONTROL_MODE, x=f32, y=f32, z=f32, yaw=f32)
 
-_GIMBAL_LIMIT = fields(pitch_limit=flag, roll_limit=flag, yaw_limit=flag, reserved=u(5))
-_DEVICE_BYTE = dict(control_device=ksy_enum("osdk_broadcast_items", "control_device", 3),
-                    onboard_requested=flag, virtual_rc=flag, reserved=u(3))
+def ksy_enum(file_id: str, name: str, bits: int) -> Callable[[Source], object]:
+    """`name` is an enum of `file_id`, or `other_file::enum`."""
+    owner, _, ename = name.rpartition("::")
+    names = tuple(sorted(KSY.enums[(owner or file_id, ename)].values()))
+    return lambda s: s.enum(names, bits)
 
-# Generator per ksy type expression, as the broadcast profiles' seq spells it.
-ITEM_BY_KSY_TYPE = {
-    "osdk_broadcast_items::time_stamp(false)": fields(time=u(32)),
-    "osdk_broadcast_items::time_stamp(true)": fields(time=u(32), nano_time=u(32), sync_flag=u(8)),
-    "osdk_broadcast_items::quaternion": fields(q0=f32, q1=f32, q2=f32, q3=f32),
-    "osdk_broadcast_items::vector3f": fields(x=f32, y=f32, z=f32),
-    "osdk_broadcast_items::velocity": fields(x=f32, y=f32, z=f32, data_valid=flag, sensor_id=u(4), reserved=u(3)),
-    "osdk_broadcast_items::position": fields(latitude=f64, longitude=f64, altitude=f32, height=f32,
-                                              gps_health=u(8)),
-    "osdk_broadcast_items::gps_detail": fields(date=u(32), time=u(32), longitude=i(32), latitude=i(32),
-                                                height_msl=i(32), vel_n=f32, vel_e=f32, vel_d=f32),
-    "osdk_broadcast_items::rtk_detail": fields(date=u(32), time=u(32), longitude=f64, latitude=f64,
-                                                height_msl=f32, vel_n=f32, vel_e=f32, vel_d=f32, yaw=i(16),
-                                                position_flag=u(8), yaw_flag=u(8)),
-    "osdk_broadcast_items::magnetometer": fields(x=i(16), y=i(16), z=i(16)),
-    "osdk_broadcast_items::rc": fields(roll=i(16), pitch=i(16), yaw=i(16), throttle=i(16), mode=i(16),
-                                       gear=i(16)),
-    "osdk_broadcast_items::gimbal(false)": fields(roll=f32, pitch=f32, yaw=f32),
-    "osdk_broadcast_items::gimbal(true)": fields(roll=f32, pitch=f32, yaw=f32, limit=_GIMBAL_LIMIT),
-    "osdk_broadcast_items::control_info(false)": fields(**_DEVICE_BYTE),
-    "osdk_broadcast_items::control_info(true)": fields(
-        cur_mov_control_mode=ksy_enum("osdk_broadcast_items", "cur_mov_control_mode", 8), **_DEVICE_BYTE),
-    "u1": u(8),
-}
 
-PROFILES = {0: "osdk_broadcast_m100_fw2_3", 1: "osdk_broadcast_m100_fw3_1", 2: "osdk_broadcast_a3_fw3_1"}
-PROFILE_IDS = {0: "m100-fw2.3", 1: "m100-fw3.1", 2: "a3-fw3.1"}
+def value_generator(file_id: str, ref: str, enum: str | None = None) -> Callable[[Source], object]:
+    """Generator for a value of the ksy type `ref` as a seq entry writes it: a
+    primitive, bN, or `[file::]type[(args)]` with literal arguments, resolved in `file_id`."""
+    if m := _BIT_TYPE.fullmatch(ref):
+        signed, bits = False, int(m[1])
+    elif m := _INT_TYPE.fullmatch(ref):
+        signed, bits = m[1] == "s", 8 * int(m[2])
+    else:
+        signed, bits = False, None
+    if enum is not None:
+        if bits is None or signed:
+            raise ksy.KsyError(f"{file_id}: enum {enum} on {ref}: only unsigned integer enums are drawn")
+        return ksy_enum(file_id, enum, bits)
+    if ref == "f4":
+        return Source.f32
+    if ref == "f8":
+        return Source.f64
+    if ref == "b1":
+        return Source.flag
+    if bits is not None:
+        return (lambda s: s.sint(bits)) if signed else u(bits)
+    target, name, args = ksy.parse_type_ref(ref, file_id)
+    return type_generator(target, name, tuple(args))
+
+
+def _type_body(file_id: str, name: str) -> tuple[str, dict]:
+    """(file id, ksy body) of a type of `file_id`, or of an imported file's top-level type."""
+    local = KSY.files[file_id].get("types") or {}
+    if name in local:
+        return file_id, local[name]
+    if name in KSY.files:
+        return name, KSY.files[name]
+    raise ksy.KsyError(f"{file_id}: unknown type {name}")
+
+
+def type_generator(file_id: str, name: str, args: tuple = ()) -> Callable[[Source], dict]:
+    """Generator for a user type with `args` bound to its params: its seq fields
+    in order. A field whose `if` (a param, or an instance `param ==/!= enum::x`)
+    is false is left out, as both parsers leave it out."""
+    owner, body = _type_body(file_id, name)
+    declared = [p["id"] for p in body.get("params") or []]
+    if len(args) != len(declared):
+        raise ksy.KsyError(f"{owner}::{name} takes params {declared}, got {len(args)} arguments")
+    env = dict(zip(declared, args))
+    # the same reading of such instances as the ksy index's sizes (rules' item sizes)
+    env.update(ksy.instance_flags(body, env))
+    makers = {}
+    for f in body.get("seq") or []:
+        where = f"{owner}::{name}.{f['id']}"
+        if unknown := sorted(set(f) - _FIELD_KEYS):
+            raise ksy.KsyError(f"{where}: no value generator for {unknown}")
+        cond = f.get("if")
+        if cond is not None:
+            if not isinstance(env.get(cond), bool):
+                raise ksy.KsyError(f"{where}: condition {cond!r} is not a param or instance known here")
+            if not env[cond]:
+                continue
+        if "size" in f:
+            if "type" in f or not isinstance(f["size"], int):
+                raise ksy.KsyError(f"{where}: only raw bytes of a fixed size are drawn")
+            makers[f["id"]] = raw(f["size"])
+        else:
+            makers[f["id"]] = value_generator(owner, f["type"], f.get("enum"))
+    return fields(**makers)
+
+
+CONTROL_MODE = type_generator("osdk_control_mode", "osdk_control_mode")
+MOVEMENT_CONTROL = type_generator("osdk_movement_control", "osdk_movement_control")
+
+PROFILE_IDS = {rules_profile(name).value: name for name in profile_names()}
+PROFILES = {value: "osdk_broadcast_" + re.sub(r"[-.]", "_", name) for value, name in PROFILE_IDS.items()}
 
 
 def _profile_items(profile: int) -> list[tuple[str, Callable]]:
     """(item, generator) in flag-bit order, read from the profile's .ksy seq."""
-    seq = KSY.files[PROFILES[profile]]["seq"]
+    file_id = PROFILES[profile]
+    seq = KSY.files[file_id]["seq"]
     flags = [f["id"].removeprefix("has_") for f in seq if f["id"].startswith("has_")]
     by_id = {f["id"]: f for f in seq}
-    return [(name, ITEM_BY_KSY_TYPE[by_id[name]["type"]]) for name in flags]
+    return [(name, value_generator(file_id, by_id[name]["type"], by_id[name].get("enum"))) for name in flags]
 
 
 def broadcast_message(profile: int) -> Callable[[Source], dict]:
@@ -338,10 +382,10 @@ PAYLOAD_TYPES = [
     *(PayloadType(f"broadcast_{PROFILE_IDS[p]}", 0x02, 0x00, False, _broadcast_body(p), profile=p)
       for p in PROFILES),
     PayloadType("lost_control", 0x02, 0x01, False, _body(fields(reason=u(8)))),
-    *(PayloadType(f"version_ack_{PROFILE_IDS[p]}", 0x00, 0x00, True, _body(fields(
-        ack_code=ksy_enum("osdk_payload", "version_ack", 16), version_crc=u(32),
-        **({} if PROFILE_IDS[p] == "m100-fw2.3" else {"version_id": raw(11)}),   # E30
-        version_name=raw(32))), profile=p) for p in PROFILES),
+    # its layout is the profile's (E30): the type's param is the profile's enum literal
+    *(PayloadType(f"version_ack_{PROFILE_IDS[p]}", 0x00, 0x00, True, _body(type_generator(
+        "osdk_payload", "version_ack_value", (f"profile::{KSY.enums[('osdk_payload', 'profile')][p]}",))),
+        profile=p) for p in PROFILES),
     PayloadType("activation_ack", 0x00, 0x01, True, _body(ack_code("activation_result"))),
     PayloadType("frequency_ack", 0x00, 0x10, True, _body(ack_code("frequency_ack"))),
     PayloadType("control_ack", 0x01, 0x00, True, _body(ack_code("control_ack"))),
@@ -475,7 +519,9 @@ def _message_types() -> list[MessageType]:
         MessageType("movement_control", lambda s: ((), c_movement_control.build(MOVEMENT_CONTROL(s))), _no_args,
                     lambda: c_movement_control, lambda io: OsdkMovementControl(io)),
     ]
-    for p, kclass in ((0, OsdkBroadcastM100Fw23), (1, OsdkBroadcastM100Fw31), (2, OsdkBroadcastA3Fw31)):
+    for p, file_id in PROFILES.items():
+        # found by name, so that a new profile needs no import here
+        kclass = getattr(importlib.import_module(f"osdk_kaitai.{file_id}"), ksy.camel(file_id))
         con, make = osdk_construct.broadcast_for_profile(p), broadcast_message(p)
         out.append(MessageType(f"broadcast_{PROFILE_IDS[p]}", lambda s, con=con, make=make: ((), con.build(make(s))),
                                _no_args, lambda con=con: con, lambda io, kclass=kclass: kclass(io)))

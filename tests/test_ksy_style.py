@@ -1,23 +1,41 @@
 """The .ksy files follow the kaitai_struct_formats conventions: meta with
-id, title, license, endian (and imports where used), a top-level doc and
-doc-ref, and a doc on every field, param, instance and enum-less type."""
+id, title, application, license, endian (bit-endian where bit fields are
+used, imports where used), a top-level doc and doc-ref, and a doc on every
+field, param, instance and enum-less type. The profile files that
+tools/gen_profile_ksy.py writes are held to the same rules."""
 from __future__ import annotations
+
+import re
 
 import pytest
 
-from osdk_conformance import ksy
+from osdk_conformance.core import ksy
+from osdk_conformance.core.rules import default_rules
 
 INDEX = ksy.load()
 FILES = sorted(INDEX.files)
+GENERATED = sorted(f"osdk_broadcast_{default_rules().profile(n).ksy_name}" for n in default_rules().profile_names)
+
+
+def _seqs(body):
+    yield body.get("seq") or []
+    for sub in (body.get("types") or {}).values():
+        yield from _seqs(sub)
+
+
+def test_generated_profile_files_are_checked_here():
+    assert GENERATED and set(GENERATED) <= set(FILES)
 
 
 @pytest.mark.parametrize("fid", FILES)
 def test_meta_and_top_level_docs(fid):
     doc = INDEX.files[fid]
     meta = doc["meta"]
-    for key in ("id", "title", "license", "ks-version", "endian"):
+    for key in ("id", "title", "application", "license", "ks-version", "endian"):
         assert meta.get(key), f"{fid}: meta.{key} missing"
     assert meta["id"] == fid
+    uses_bits = any(re.fullmatch(r"b\d+", str(f.get("type"))) for seq in _seqs(doc) for f in seq)
+    assert not uses_bits or meta.get("bit-endian") == "le", f"{fid}: bit fields without meta.bit-endian le"
     assert doc.get("doc"), f"{fid}: no top-level doc"
     assert doc.get("doc-ref"), f"{fid}: no doc-ref"
 

@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from osdk_conformance.core import rules
+
 ROOT = Path(__file__).resolve().parents[1]
 TESTEES = ROOT / "conformance" / "testees"
 C_DIR = TESTEES / "c"
@@ -78,6 +80,32 @@ def test_sanitized_c_testee_conforms_over_every_vector(tmp_path):
 def test_go_glue_unit_tests():
     out = ok(make(TESTEES / "go", "test"))
     assert "ok" in out
+
+
+def glue_sources() -> list[Path]:
+    """The hand-written code around the generated parsers: the testees'
+    glue, the C baseline and the C generator (not their unit tests and
+    READMEs, whose examples name a profile on purpose)."""
+    files = [*(TESTEES / "go").glob("*.go"), *(TESTEES / "javascript").glob("*.js"),
+             *(TESTEES / "java" / "src").rglob("*.java"), *(C_DIR / "src").iterdir(), *(C_DIR / "fuzz").iterdir(),
+             *(ROOT / "conformance" / "baseline" / "src").iterdir(), ROOT / "conformance" / "baseline" / "gen_items.py",
+             *(ROOT / "tools" / "cgen").rglob("*.py"), *(ROOT / "tools" / "cgen" / "templates").iterdir()]
+    return [f for f in files if f.is_file()]
+
+
+def test_glue_names_no_profile_and_no_broadcast_item_type():
+    # A profile or item is added in the spec alone: the glue gets profiles and
+    # types from the tables and the generated code, so it spells none of them
+    # (id, ksy name, or the class names the compilers make of them).
+    r = rules.default_rules()
+    spellings = {"OsdkBroadcastItems", "osdk_broadcast_items"}
+    for p in r.profile_names:
+        name = rules.ksy_name(p)
+        spellings |= {p, name, name.upper(), "".join(part.capitalize() for part in name.split("_"))}
+    sources = glue_sources()
+    assert len(sources) > 20
+    found = [f"{f.relative_to(ROOT)}: {s}" for f in sources for s in sorted(spellings) if s in f.read_text()]
+    assert not found
 
 
 @pytest.mark.slow

@@ -9,22 +9,16 @@ copy, with the copy's modules first on the path.
 """
 from __future__ import annotations
 
-import os
 import re
-import shutil
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-from osdk_conformance.paths import ROOT, SEED_ENV
+from osdk_conformance.core.paths import ROOT
+from repo_copy import PACKAGES, checkout_files, make_copy
 
-PACKAGES = {  # importable name -> its directory in the repository (pyproject.toml package-dir)
-    "osdk_conformance": "osdk_conformance",
-    "osdk_construct": "spec/construct",
-    "osdk_kaitai": "generated/python/osdk_kaitai",
-}
 # A path out of the checkout to the project's shared sources, written or computed.
 OUTSIDE = re.compile(r"""\.\./shared\b|\bparents?\b[^\n]*['"]shared['"]""")
 # Prose that cites where a fact came from, and this file, which spells out
@@ -32,30 +26,12 @@ OUTSIDE = re.compile(r"""\.\./shared\b|\bparents?\b[^\n]*['"]shared['"]""")
 NOT_SCANNED = ("docs/", "spec/ERRATA.md", "tests/test_lone_clone.py")
 
 
-def _checkout_files() -> list[str]:
-    if not (ROOT / ".git").exists():
-        pytest.skip("not a git checkout: no way to tell which files a clone would hold")
-    out = subprocess.run(["git", "ls-files", "-z", "-co", "--exclude-standard"], cwd=ROOT,
-                         capture_output=True, check=True).stdout.decode()
-    return sorted({f for f in out.split("\0") if f and (ROOT / f).is_file()})
-
-
 @pytest.fixture(scope="module")
 def lone(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]]:
     """The copy, and the environment to run it with."""
     base = tmp_path_factory.mktemp("lone")
     repo = base / "repo"
-    for name in _checkout_files():
-        (repo / name).parent.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(ROOT / name, repo / name, follow_symlinks=False)
-    (repo / "tools/ksc/node_modules").symlink_to(ROOT / "tools/ksc/node_modules")
-    # osdk_construct lives in spec/construct: a link of that name puts the
-    # copy's package on the path ahead of the venv's editable install
-    shim = tmp_path_factory.mktemp("pythonpath")
-    (shim / "osdk_construct").symlink_to(repo / "spec/construct")
-    env = {k: v for k, v in os.environ.items() if k != SEED_ENV}
-    env["PYTHONPATH"] = os.pathsep.join([str(repo), str(repo / "generated/python"), str(shim)])
-    env["PYTHONDONTWRITEBYTECODE"] = "1"
+    env = make_copy(repo, tmp_path_factory.mktemp("pythonpath"))
     assert sorted(p.name for p in base.iterdir()) == ["repo"]  # nothing beside the clone
     return repo, env
 
@@ -68,7 +44,7 @@ def _run(lone: tuple[Path, dict[str, str]], *argv: str) -> subprocess.CompletedP
 def test_the_copy_runs_its_own_modules(lone: tuple[Path, dict[str, str]]) -> None:
     repo, _ = lone
     names = ", ".join(PACKAGES)
-    proc = _run(lone, "-c", f"import {names}, osdk_conformance.paths as p\n"
+    proc = _run(lone, "-c", f"import {names}, osdk_conformance.core.paths as p\n"
                             f"for m in ({names}): print(m.__name__, m.__file__)\n"
                             "print('ROOT', p.ROOT)")
     assert proc.returncode == 0, proc.stderr
@@ -106,7 +82,7 @@ def test_trace_tests_pass(lone: tuple[Path, dict[str, str]]) -> None:
 
 def test_no_source_reaches_outside_the_checkout() -> None:
     found = []
-    for name in _checkout_files():
+    for name in checkout_files():
         if name.startswith(NOT_SCANNED):
             continue
         try:

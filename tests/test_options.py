@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from osdk_conformance import options
+from osdk_conformance.core import options
 from osdk_conformance.cli import build_parser, main
 
 

@@ -21,11 +21,11 @@ from pathlib import Path
 import pytest
 from jsonschema import Draft202012Validator
 
-from osdk_conformance import response_schema as rs
-from osdk_conformance.reference import OPERATIONS
-from osdk_conformance.runner import BUNDLED_IMPLS, judge, request_of
-from osdk_conformance import testee as supervision
-from osdk_conformance.vectors import compare, load_cases
+from osdk_conformance.harness import response_schema as rs
+from osdk_conformance.reference.codec import OPERATIONS
+from osdk_conformance.harness.runner import BUNDLED_IMPLS, judge, request_of
+from osdk_conformance.harness import testee as supervision
+from osdk_conformance.harness.vectors import compare, load_cases
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -69,6 +69,57 @@ def test_schema_files_are_2020_12_schemas_with_unique_ids():
 
 def test_schema_files_are_what_the_spec_generates(capsys):
     assert _tool().main(["--check"]) == 0, capsys.readouterr().err
+
+
+# (module attribute of tools/gen_schemas.py naming the document, (a generated line, a hand edit of it),
+#  a region of the document)
+GENERATED_DOCS = [
+    ("NAMING", ("| `a3-fw3.1` | `a3_fw3_1` | 2 |", "| `a3-fw3.1` | `a3_fw3_1` | 3 |"), "profiles"),
+    ("PROTOCOL", ("| 13 | (reserved) | (reserved) | control_info |", "| 13 | (reserved) | (reserved) | (reserved) |"),
+     "flag_bits"),
+]
+
+
+def _mentions(text: str, name: str) -> bool:
+    return re.search(rf"(?<![\w-]){re.escape(name)}(?![\w-])", text) is not None
+
+
+@pytest.mark.parametrize("doc, edit, region", GENERATED_DOCS, ids=[d for d, _, _ in GENERATED_DOCS])
+def test_doc_parts_restating_the_spec_are_generated_and_checked(doc, edit, region, tmp_path, monkeypatch, capsys):
+    tool = _tool()
+    text = getattr(tool, doc).read_text()
+    # every profile and broadcast item of the rules is in a generated part
+    parts = "".join(m.group("body") for m in tool._REGION.finditer(text))
+    r = tool.ValueModel().r
+    for name in (*r.profile_names, *r.broadcast_item_names):
+        assert _mentions(parts, name), name
+    # the generator reads copies of every such document, the one under test hand-edited inside a generated part
+    for attr, _, _ in GENERATED_DOCS:
+        copy_ = tmp_path / getattr(tool, attr).relative_to(ROOT)
+        copy_.parent.mkdir(parents=True, exist_ok=True)
+        copy_.write_text(getattr(tool, attr).read_text())
+        monkeypatch.setattr(tool, attr, copy_)
+    monkeypatch.setattr(tool, "ROOT", tmp_path)
+    edited = getattr(tool, doc)
+    assert text.count(edit[0]) == 1
+    edited.write_text(text.replace(edit[0], edit[1]))
+    assert tool.main(["--check"]) == 1
+    err = capsys.readouterr().err
+    name = str(edited.relative_to(tmp_path))
+    assert f"differs: the generated parts of {name}" in err
+    assert err.count("differs: the generated parts of") == 1, err
+    # a lost marker stops the generator instead of leaving a part unwritten
+    edited.write_text(text.replace(f"<!-- {region}:end -->", ""))
+    with pytest.raises(SystemExit, match=f"{re.escape(name)}: no region '{region}'"):
+        tool.main(["--check"])
+
+
+def test_naming_md_types_no_profile_outside_its_generated_parts():
+    tool = _tool()
+    # profiles only: an item name may be an enum value name too (`rc` of control_device)
+    outside = tool._REGION.sub("", tool.NAMING.read_text())
+    for name in tool.ValueModel().r.profile_names:
+        assert not _mentions(outside, name), name
 
 
 def test_every_operation_has_a_request_and_a_response_schema():
@@ -223,7 +274,7 @@ def _run_altered_reference(tmp_path, alter: str):
     testee.write_text(
         "import json, sys\n"
         f"sys.path.insert(0, {str(ROOT)!r})\n"
-        "from osdk_conformance.reference import request_answer\n"
+        "from osdk_conformance.reference.codec import request_answer\n"
         "for line in sys.stdin:\n"
         "    req = json.loads(line)\n"
         "    res = request_answer(req)\n"
@@ -248,7 +299,7 @@ def test_protocol_md_combination_table_is_the_rules():
     """PROTOCOL.md's table of combinations and input ranges, row by row,
     against rules.yaml for every profile (the ranges must not differ by
     profile, as the page says)."""
-    from osdk_conformance import rules
+    from osdk_conformance.core import rules
 
     r = rules.default_rules()
     text = (ROOT / "conformance" / "PROTOCOL.md").read_text()

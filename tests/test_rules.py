@@ -1,4 +1,4 @@
-"""Tests of spec/rules.yaml, its schema and the loader osdk_conformance.rules."""
+"""Tests of spec/rules.yaml, its schema and the loader osdk_conformance.core.rules."""
 from __future__ import annotations
 
 import copy
@@ -11,11 +11,15 @@ import pytest
 import yaml
 from jsonschema import Draft202012Validator
 
-from osdk_conformance.rules import (
+from osdk_conformance.core import rules as rules_module
+from osdk_conformance.core.rules import (
     CLASSIFICATIONS,
     Rules,
     RulesError,
+    broadcast_item,
+    errata_ids,
     load_rules,
+    profile_names,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,7 +53,7 @@ def test_rules_validate_against_schema(raw: dict[str, Any]) -> None:
 
 def test_top_level_keys(raw: dict[str, Any]) -> None:
     assert list(raw) == [
-        "crc", "frame", "profiles", "frequencies", "control_mode", "control_modes",
+        "crc", "frame", "profiles", "broadcast_items", "frequencies", "control_mode", "control_modes",
         "enums", "flight_status", "device_byte", "velocity_status", "gimbal_limit",
         "rc_channels", "plausibility", "units",
     ]
@@ -58,6 +62,7 @@ def test_top_level_keys(raw: dict[str, Any]) -> None:
 def test_default_path_loads(rules: Rules) -> None:
     assert rules.path == RULES_PATH
     assert rules.profile_names == PROFILES
+    assert profile_names() == PROFILES
 
 
 # ------------------------------------------------------- control mode byte
@@ -358,13 +363,23 @@ FACTS_SIZES = {
 }
 
 
-@pytest.mark.parametrize(("name", "n_items", "total", "variants"), [
-    ("m100-fw2.3", 12, 115, (4, 12, 1)),
-    ("m100-fw3.1", 12, 122, (9, 13, 2)),
-    ("a3-fw3.1", 14, 198, (9, 13, 2)),
+# The params of the parametric items: FW 2.3 the short forms, FW 3.1 the long ones (errata E28).
+FACTS_PARAMS = {
+    False: {"time_stamp": {"has_ns_and_sync": False}, "gimbal": {"has_limit_byte": False}, "control_info": {"has_mode": False}},
+    True: {"time_stamp": {"has_ns_and_sync": True}, "gimbal": {"has_limit_byte": True}, "control_info": {"has_mode": True}},
+}
+
+
+@pytest.mark.parametrize(("name", "value", "n_items", "total", "variants"), [
+    ("m100-fw2.3", 0, 12, 115, (4, 12, 1)),
+    ("m100-fw3.1", 1, 12, 122, (9, 13, 2)),
+    ("a3-fw3.1", 2, 14, 198, (9, 13, 2)),
 ])
-def test_profile_layout(rules: Rules, name: str, n_items: int, total: int, variants: tuple[int, int, int]) -> None:
+def test_profile_layout(rules: Rules, name: str, value: int, n_items: int, total: int,
+                        variants: tuple[int, int, int]) -> None:
     p = rules.profile(name)
+    assert p.value == value and p.ksy_name == name.replace("-", "_").replace(".", "_")
+    assert {k: dict(v) for k, v in p.item_params.items()} == FACTS_PARAMS[name != "m100-fw2.3"]
     assert len(p.flag_bits) == n_items
     assert list(p.flag_bits) == FACTS_BIT_ORDER[name]
     assert list(p.item_sizes.values()) == FACTS_SIZES[name]
@@ -374,6 +389,104 @@ def test_profile_layout(rules: Rules, name: str, n_items: int, total: int, varia
     assert p.payload_size(0) == 0
     with pytest.raises(RulesError):
         p.payload_size(1 << n_items)
+
+
+def test_broadcast_items(rules: Rules, raw: dict[str, Any]) -> None:
+    assert set(rules.broadcast_item_names) == set().union(*(rules.profile(n).flag_bits for n in PROFILES))
+    assert rules.broadcast_item("gimbal").params == ("has_limit_byte",)
+    assert rules.broadcast_item("acceleration").type == rules.broadcast_item("angular_rate").type == "vector3f"
+    assert {i for i in rules.broadcast_item_names if rules.broadcast_item(i).type == "u1"} == {"flight_status", "battery"}
+    assert all(b["source"] and b["doc"] for b in raw["broadcast_items"].values())
+    with pytest.raises(RulesError, match="unknown broadcast item 'compass'"):
+        rules.broadcast_item("compass")
+
+
+# The ERRATA entries that decide each item's size and fields, which every
+# golden vector of the item alone is flagged with (E29: the spec's names, not
+# the seed's typos; E25: the battery byte's 0-100 bound).
+FACTS_ITEM_ERRATA = {
+    "time_stamp": ("E08",), "quaternion": ("E29",), "acceleration": ("E18",), "velocity": ("E04",),
+    "angular_rate": ("E18",), "position": ("E01", "E29"), "gps_detail": ("E06", "E13"),
+    "rtk_detail": ("E06", "E14"), "magnetometer": ("E07",), "rc": ("E07",), "gimbal": ("E09",),
+    "flight_status": ("E19",), "battery": ("E25",), "control_info": ("E03",),
+}
+
+
+def test_broadcast_item_errata(rules: Rules) -> None:
+    assert {i: rules.broadcast_item(i).errata for i in rules.broadcast_item_names} == FACTS_ITEM_ERRATA
+    assert set().union(*FACTS_ITEM_ERRATA.values()) <= errata_ids()
+    assert broadcast_item("position") == rules.broadcast_item("position")
+
+
+# ERRATA E30: FW 3.1 firmware (M100 and A3) sends an 11-byte version ID
+# between the CRC and the name of the version ACK; M100 FW 2.3 does not.
+FACTS_VERSION_ID = {"m100-fw2.3": False, "m100-fw3.1": True, "a3-fw3.1": True}
+
+
+def test_version_ack_per_profile(rules: Rules, raw: dict[str, Any]) -> None:
+    assert {name: rules.profile(name).has_version_id for name in PROFILES} == FACTS_VERSION_ID
+    for name in PROFILES:
+        assert "errata E30" in raw["profiles"][name]["version_ack"]["source"], name
+
+
+def test_variant_sizes_of_a_profile_without_the_item(rules: Rules) -> None:
+    p = rules.profile("m100-fw2.3")
+    no_gimbal = type(p)(**{**p.__dict__, "flag_bits": tuple(i for i in p.flag_bits if i != "gimbal")})
+    with pytest.raises(RulesError, match="no item 'gimbal'"):
+        no_gimbal.gimbal_size
+
+
+def _items_ksy_copy(tmp_path: Path, old: str, new: str) -> Path:
+    text = rules_module.ITEMS_KSY_PATH.read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    path = tmp_path / "osdk_broadcast_items.ksy"
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return path
+
+
+def test_item_sizes_are_computed_from_the_item_types(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """An extra s2 channel in the ksy rc type makes rc 14 bytes in every profile."""
+    monkeypatch.setattr(rules_module, "ITEMS_KSY_PATH", _items_ksy_copy(
+        tmp_path, "      - id: gear\n        type: s2\n", "      - id: gear\n        type: s2\n"
+                  "      - id: aux\n        type: s2\n        doc: An extra channel.\n"))
+    changed = load_rules()
+    assert [changed.profile(name).item_sizes["rc"] for name in PROFILES] == [14, 14, 14]
+    assert [changed.profile(name).full_payload_size for name in PROFILES] == [115 + 2, 122 + 2, 198 + 2]
+
+
+@pytest.mark.parametrize(("old", "new", "message"), [
+    ("      - id: reserved\n        type: b5", "      - id: reserved\n        type: b6",
+     r"profiles\.m100-fw3\.1: the size of gimbal cannot be worked out .*whole bytes"),
+    ("  gimbal:\n    doc:", "  gimbal_angles:\n    doc:",
+     r"broadcast_items\.gimbal\.type: 'gimbal' is not a type of osdk_broadcast_items\.ksy"),
+    ("      - id: has_limit_byte\n", "      - id: with_limit_byte\n",
+     r"broadcast_items\.gimbal\.params: \['has_limit_byte'\], but osdk_broadcast_items\.ksy gimbal has params \['with_limit_byte'\]"),
+])
+def test_item_types_that_do_not_fit_the_rules(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                              old: str, new: str, message: str) -> None:
+    monkeypatch.setattr(rules_module, "ITEMS_KSY_PATH", _items_ksy_copy(tmp_path, old, new))
+    with pytest.raises(RulesError, match=message):
+        load_rules()
+
+
+def test_errata_are_read_from_errata_md(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """An errata id the rules list must head an entry of spec/ERRATA.md."""
+    text = rules_module.ERRATA_PATH.read_text(encoding="utf-8")
+    assert text.count("\n## E09: ") == 1
+    shortened = tmp_path / "ERRATA.md"
+    shortened.write_text(text.replace("\n## E09: ", "\n## Gimbal: "), encoding="utf-8")
+    monkeypatch.setattr(rules_module, "ERRATA_PATH", shortened)
+    with pytest.raises(RulesError, match=r"broadcast_items\.gimbal\.errata: E09 is not an entry of .*ERRATA\.md"):
+        load_rules()
+    monkeypatch.setattr(rules_module, "ERRATA_PATH", tmp_path / "absent.md")
+    with pytest.raises(RulesError, match="cannot read the errata .*absent.md"):
+        load_rules()
+
+
+def test_unreadable_item_types(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(rules_module, "ITEMS_KSY_PATH", tmp_path / "missing.ksy")
+    with pytest.raises(RulesError, match="cannot read the broadcast item types"):
+        load_rules()
 
 
 def test_facts_worked_broadcast_sizes(rules: Rules) -> None:
@@ -508,8 +621,8 @@ def _write(tmp_path: Path, data: Any) -> Path:
 
 
 def _mutations() -> list[tuple[str, Callable[[dict[str, Any]], None], str]]:
-    def size_as_text(d: dict[str, Any]) -> None:
-        d["profiles"]["m100-fw2.3"]["item_sizes"]["rc"] = "twelve"
+    def param_as_text(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["item_params"]["gimbal"]["has_limit_byte"] = "no"
 
     def bad_logic(d: dict[str, Any]) -> None:
         d["control_modes"]["combinations"][2]["horizontal"] = "hori_speed"
@@ -523,8 +636,56 @@ def _mutations() -> list[tuple[str, Callable[[dict[str, Any]], None], str]]:
     def bad_sof(d: dict[str, Any]) -> None:
         d["frame"]["sof"] = 0xAB
 
-    def inconsistent_size(d: dict[str, Any]) -> None:
-        d["profiles"]["a3-fw3.1"]["time_stamp_size"] = 4
+    def layout_note_size(d: dict[str, Any]) -> None:
+        d["profiles"]["a3-fw3.1"]["layout_note"] = "the 4-byte time stamp and the 13-byte gimbal item"
+
+    def description_size(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["description"] = "Matrice 100: 4-byte time stamp, 13-byte gimbal item, 12 items"
+
+    def description_count(d: dict[str, Any]) -> None:
+        d["profiles"]["a3-fw3.1"]["description"] = "A3 family: 12 items"
+
+    def description_unknown_item(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["description"] = "Matrice 100: 32-byte gps detail"
+
+    def unknown_flag_item(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["flag_bits"][6] = "compass"
+
+    def missing_params(d: dict[str, Any]) -> None:
+        del d["profiles"]["m100-fw2.3"]["item_params"]["gimbal"]
+
+    def wrong_param_name(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["item_params"]["control_info"] = {"has_cur_mov_control_mode": False}
+
+    def params_for_absent_item(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["item_params"]["gps_detail"] = {"has_date": True}
+
+    def param_as_number(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["item_params"]["gimbal"]["has_limit_byte"] = 1
+
+    def params_for_plain_type(d: dict[str, Any]) -> None:
+        d["broadcast_items"]["battery"]["params"] = ["percent"]
+
+    def unknown_item_type(d: dict[str, Any]) -> None:
+        d["broadcast_items"]["rc"]["type"] = "remote"
+
+    def unused_item(d: dict[str, Any]) -> None:
+        d["broadcast_items"]["compass"] = {"type": "magnetometer", "doc": "Compass.", "source": "decision: test"}
+
+    def profile_value_order(d: dict[str, Any]) -> None:
+        d["profiles"]["m100-fw2.3"]["value"], d["profiles"]["m100-fw3.1"]["value"] = 1, 0
+
+    def bad_profile_id(d: dict[str, Any]) -> None:
+        d["profiles"] = {("M100 fw2.3" if k == "m100-fw2.3" else k): v for k, v in d["profiles"].items()}
+
+    def combination_missing_profile(d: dict[str, Any]) -> None:
+        del d["control_modes"]["combinations"][0]["ranges"]["a3-fw3.1"]
+
+    def unknown_profile_named(d: dict[str, Any]) -> None:
+        d["gimbal_limit"]["applies_to_profiles"] = ["m100-fw3.1", "a3-fw3.2"]
+
+    def unknown_plausibility_item(d: dict[str, Any]) -> None:
+        d["plausibility"]["enum_membership"][0]["item"] = "status"
 
     def wrong_value(d: dict[str, Any]) -> None:
         d["control_modes"]["undocumented"][0]["value"] = 0x68
@@ -541,10 +702,6 @@ def _mutations() -> list[tuple[str, Callable[[dict[str, Any]], None], str]]:
         c["ranges"] = copy.deepcopy(c["ranges"])
         c["ranges"]["a3-fw3.1"]["vertical"]["max"] = 5
 
-    def profile_enum_order(d: dict[str, Any]) -> None:
-        values = d["enums"]["profile"]["values"]
-        values[0]["name"], values[1]["name"] = values[1]["name"], values[0]["name"]
-
     def bit0_missing_profile(d: dict[str, Any]) -> None:
         del d["control_mode"]["bit0_by_profile"]["a3-fw3.1"]
 
@@ -554,17 +711,54 @@ def _mutations() -> list[tuple[str, Callable[[dict[str, Any]], None], str]]:
     def bit0_stable_with_values(d: dict[str, Any]) -> None:
         d["control_mode"]["bit0_by_profile"]["a3-fw3.1"]["yaw_ang_requires"] = 0
 
+    def no_version_ack(d: dict[str, Any]) -> None:
+        del d["profiles"]["m100-fw3.1"]["version_ack"]
+
+    def version_id_as_size(d: dict[str, Any]) -> None:
+        d["profiles"]["a3-fw3.1"]["version_ack"] = {"version_id": 11, "source": "decision: test"}
+
+    def unknown_errata(d: dict[str, Any]) -> None:
+        d["broadcast_items"]["rc"]["errata"] = ["E07", "E99"]
+
+    def malformed_errata(d: dict[str, Any]) -> None:
+        d["broadcast_items"]["gimbal"]["errata"] = ["errata E09"]
+
     return [
-        ("profile_enum_order", profile_enum_order, r"enums\.profile: must be 0\.\.2 named"),
-        ("bit0_missing_profile", bit0_missing_profile, r"bit0_by_profile: 'a3-fw3\.1' is a required property"),
+        ("profile_value_order", profile_value_order, r"profiles: values must be 0\.\.2 in file order, found \[1, 0, 2\]"),
+        ("bad_profile_id", bad_profile_id, r"profiles: 'M100 fw2\.3' does not match"),
+        ("bit0_missing_profile", bit0_missing_profile,
+         r"control_mode\.bit0_by_profile: must name every profile once \(differs in \['a3-fw3\.1'\]\)"),
+        ("combination_missing_profile", combination_missing_profile,
+         r"control_modes\.combinations\[index 1\]\.ranges: must name every profile once \(differs in \['a3-fw3\.1'\]\)"),
+        ("unknown_profile_named", unknown_profile_named, r"gimbal_limit\.applies_to_profiles: 'a3-fw3\.2' is not a profile"),
+        ("unknown_plausibility_item", unknown_plausibility_item,
+         r"plausibility\.enum_membership\[0\]\.item: 'status' is not in broadcast_items"),
+        ("unknown_flag_item", unknown_flag_item, r"profiles\.m100-fw2\.3\.flag_bits: 'compass' is not in broadcast_items"),
+        ("missing_params", missing_params,
+         r"profiles\.m100-fw2\.3\.item_params\.gimbal: gives \[\], broadcast_items\.gimbal has params \['has_limit_byte'\]"),
+        ("wrong_param_name", wrong_param_name,
+         r"item_params\.control_info: gives \['has_cur_mov_control_mode'\], broadcast_items\.control_info has params \['has_mode'\]"),
+        ("params_for_absent_item", params_for_absent_item, r"profiles\.m100-fw2\.3\.item_params\.gps_detail: not an item of this profile"),
+        ("param_as_number", param_as_number, r"profiles\.m100-fw2\.3\.item_params\.gimbal: has_limit_byte must be bool"),
+        ("params_for_plain_type", params_for_plain_type, r"broadcast_items\.battery\.params: a bare byte \(u1\) has no params"),
+        ("unknown_item_type", unknown_item_type, r"broadcast_items\.rc\.type: 'remote' is not a type of osdk_broadcast_items\.ksy"),
+        ("unused_item", unused_item, r"broadcast_items\.compass: no profile has this item"),
+        ("layout_note_size", layout_note_size, r"profiles\.a3-fw3\.1\.layout_note: says '4-byte time stamp', but time_stamp is 9 bytes"),
+        ("description_size", description_size, r"profiles\.m100-fw2\.3\.description: says '13-byte gimbal item', but gimbal is 12 bytes"),
+        ("description_count", description_count, r"profiles\.a3-fw3\.1\.description: says '12 items', but the profile has 14"),
+        ("description_unknown_item", description_unknown_item,
+         r"profiles\.m100-fw2\.3\.description: '32-byte gps detail' names no item of this profile"),
         ("bit0_yaw_frame_incomplete", bit0_yaw_frame_incomplete, r"bit0_by_profile\.m100-fw2\.3: 'violation' is a required property"),
         ("bit0_stable_with_values", bit0_stable_with_values, r"bit0_by_profile\.a3-fw3\.1: .* should not be valid"),
-        ("size_as_text", size_as_text, r"profiles\.m100-fw2\.3\.item_sizes\.rc: 'twelve' is not of type 'integer'"),
+        ("no_version_ack", no_version_ack, r"profiles\.m100-fw3\.1: 'version_ack' is a required property"),
+        ("version_id_as_size", version_id_as_size, r"profiles\.a3-fw3\.1\.version_ack\.version_id: 11 is not of type 'boolean'"),
+        ("unknown_errata", unknown_errata, r"broadcast_items\.rc\.errata: E99 is not an entry of spec/ERRATA\.md"),
+        ("malformed_errata", malformed_errata, r"broadcast_items\.gimbal\.errata\.0: 'errata E09' does not match"),
+        ("param_as_text", param_as_text, r"profiles\.m100-fw2\.3\.item_params\.gimbal\.has_limit_byte: 'no' is not of type 'boolean', 'integer'"),
         ("bad_logic", bad_logic, r"control_modes\.combinations\.2\.horizontal: 'hori_speed' is not one of"),
         ("unknown_key", unknown_key, r"frame: Additional properties are not allowed \('colour'"),
         ("missing_section", missing_section, r"'units' is a required property"),
         ("bad_sof", bad_sof, r"frame\.sof: 170 was expected"),
-        ("inconsistent_size", inconsistent_size, r"profiles\.a3-fw3\.1\.time_stamp_size: 4 differs from item_sizes\.time_stamp \(9\)"),
         ("wrong_value", wrong_value, r"value 0x68, expected 0x60"),
         ("duplicate_enum", duplicate_enum, r"enums\.control_ack: duplicate values \[0\]"),
         ("wrong_cur_mov", wrong_cur_mov, r"cur_mov_control_mode\[3\] is 'horiz_vel_vert_vel_yaw_rate', expected 'horiz_vel_vert_vel_yaw_ang'"),

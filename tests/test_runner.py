@@ -14,10 +14,10 @@ from xml.etree import ElementTree as ET
 
 import pytest
 
-from osdk_conformance import report
-from osdk_conformance.report import Result
-from osdk_conformance.runner import read_failure_list
-from osdk_conformance import testee as supervision
+from osdk_conformance.harness import report
+from osdk_conformance.harness.report import Result
+from osdk_conformance.harness import testee as supervision
+from osdk_conformance.harness.runner import BUNDLED_IMPLS, default_failure_list, read_failure_list
 
 HERE = Path(__file__).resolve().parent
 TESTEES = HERE / "testees"
@@ -35,7 +35,7 @@ def command_for(name: str, *extra: str) -> str:
 
 @pytest.fixture(scope="module")
 def cases():
-    from osdk_conformance.vectors import load_cases
+    from osdk_conformance.harness.vectors import load_cases
 
     return load_cases()
 
@@ -69,7 +69,7 @@ def junit(path: Path) -> ET.Element:
 def test_every_bundled_implementation_conforms(tmp_path):
     # One `--impl all` run: every language, each in its own process, with
     # empty failure lists (or reviewed ones in conformance/failure_lists/).
-    from osdk_conformance.runner import BUNDLED_IMPLS
+    from osdk_conformance.harness.runner import BUNDLED_IMPLS
 
     proc = osdkc("run", "--impl", "all", "--jobs", "2", "--report-dir", str(tmp_path), timeout=1200)
     assert proc.returncode == 0, proc.stdout[-6000:] + proc.stderr[-2000:]
@@ -85,7 +85,7 @@ def test_every_bundled_implementation_conforms(tmp_path):
         assert "CONFORMS" in (tmp_path / f"{s['impl']}.html").read_text()
     # every decoding operation is complete in every language: only the
     # encode cases may be skipped (the Kaitai targets cannot serialise)
-    from osdk_conformance.vectors import load_cases
+    from osdk_conformance.harness.vectors import load_cases
 
     encode_cases = sum(c.operation.startswith("encode_") for c in load_cases())
     for s in status["implementations"]:
@@ -93,7 +93,7 @@ def test_every_bundled_implementation_conforms(tmp_path):
 
 
 def test_status_section_of_generated_readme_is_rendered_from_a_run(tmp_path):
-    from osdk_conformance import status_readme
+    from osdk_conformance.harness import status_readme
 
     readme = tmp_path / "README.md"
     readme.write_text(f"intro\n{status_readme.BEGIN}\nold\n{status_readme.END}\noutro\n")
@@ -513,8 +513,8 @@ def _snan_inputs():
 
 @pytest.mark.parametrize("req", _snan_inputs(), ids=lambda r: r["op"])
 def test_kaitai_testee_restores_signalling_nan_bits(req):
-    from osdk_conformance.reference import request_answer
-    from osdk_conformance.vectors import Case, compare
+    from osdk_conformance.reference.codec import request_answer
+    from osdk_conformance.harness.vectors import Case, compare
 
     kt = _kaitai_testee()
     got = json.loads(json.dumps(kt.answer(dict(req))))
@@ -539,3 +539,12 @@ def test_kaitai_testee_does_not_use_construct():
     out = proc.stdout.splitlines()
     assert len(out) == 1 + len(_snan_inputs()) + 1 and all(json.loads(x)["ok"] for x in out[:-1])
     assert out[-1] == "[]"
+
+
+def test_every_bundled_implementation_has_a_reviewed_failure_list() -> None:
+    # protobuf keeps one list per testee even when it is empty: the file is
+    # where a known failure gets written down, with its reason
+    for impl in BUNDLED_IMPLS:
+        path = default_failure_list(impl)
+        assert path.exists(), path
+        assert read_failure_list(path) == {}, f"{path}: every bundled implementation conforms, so its list is empty"

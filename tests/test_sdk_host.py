@@ -19,10 +19,11 @@ from pathlib import Path
 import pytest
 import serial
 
-from osdk_conformance import cli, sdk_host
-from osdk_conformance.deframe import Frame, deframe
-from osdk_conformance.device_wire import open_frame
-from osdk_conformance.sim import spawned
+from osdk_conformance import cli
+from osdk_conformance.sdk import host as sdk_host
+from osdk_conformance.core.deframe import Frame, deframe
+from osdk_conformance.core.wire import open_frame
+from osdk_conformance.sim.simulator import spawned
 
 OSDK_SRC = os.environ.get("OSDK_SRC")
 needs_sdk = pytest.mark.skipif(not OSDK_SRC, reason="OSDK_SRC does not point at a checkout of DJI's Onboard-SDK 3.1.x")
@@ -36,7 +37,9 @@ def fake_tree(root: Path, version: str = "3.1.9", leave_out: str | None = None,
             continue
         f = root / rel
         f.parent.mkdir(parents=True, exist_ok=True)
-        f.write_text(f"/* @version {version} */\nconst Version versionM100_31 = 0; const Version versionA3_31 = 0;\n")
+        f.write_text(f"/* @version {version} */\n"   # the SDK version constants of the two FW 3.1 profiles
+                     "const Version versionM100_31 = (MAKE_VERSION(3, 1, 10, 0));\n"
+                     "const Version versionA3_31 = (MAKE_VERSION(3, 1, 100, 0));\n")
     return root
 
 
@@ -93,7 +96,7 @@ def test_build_error_is_exit_2_with_the_compiler_output(tmp_path, capsys):
 
 def sent_frames(profile: str, count: int) -> list[tuple[int, bytes]]:
     """SEQ and value of broadcast frames built the way the simulator builds them."""
-    from osdk_conformance.sim import SimConfig, Simulator
+    from osdk_conformance.sim.simulator import SimConfig, Simulator
 
     class Nowhere:
         def connected(self) -> bool:

@@ -13,10 +13,10 @@ from pathlib import Path
 
 import pytest
 
-from osdk_conformance import mutants
-from osdk_conformance.selftest import interleave
-from osdk_conformance.spec_rules import RULES
-from osdk_conformance.trace import errata_ids
+from osdk_conformance.harness import mutants
+from osdk_conformance.harness.selftest import interleave
+from osdk_conformance.harness.spec_rules import RULES
+from osdk_conformance.traceability.trace import errata_ids
 
 ROOT = Path(__file__).resolve().parents[1]
 MUTANT_TESTEE = ROOT / "conformance" / "testees" / "mutant_testee.py"
@@ -38,7 +38,7 @@ def osdkc(*args: str, timeout: float = 600) -> subprocess.CompletedProcess:
                           timeout=timeout, cwd=ROOT)
 
 
-# The mutants of the bug classes of osdk_conformance.vector_tables: each must
+# The mutants of the bug classes of osdk_conformance.harness.vector_tables: each must
 # fail many vectors, not a handful (a class closed case by case would not).
 BUG_CLASS_MUTANTS = {
     "value_error_rescans_after_sof", "truncated_tail_no_rescan", "ack_repeat_matched", "ack_match_seq_only",
@@ -113,7 +113,7 @@ def test_registry():
 
 
 def test_interleave_keeps_every_case_once():
-    from osdk_conformance.vectors import load_cases
+    from osdk_conformance.harness.vectors import load_cases
 
     cases = load_cases()
     ordered = interleave(cases)

@@ -12,9 +12,9 @@ import time
 import pytest
 import serial
 
-from osdk_conformance.deframe import Frame, deframe
-from osdk_conformance.device_wire import encode, open_frame
-from osdk_conformance.sim import (PtyTransport, SimConfig, Simulator, Vehicle, euler_to_quaternion,
+from osdk_conformance.core.deframe import Frame, deframe
+from osdk_conformance.core.wire import encode, open_frame
+from osdk_conformance.sim.simulator import (PtyTransport, SimConfig, Simulator, Vehicle, euler_to_quaternion,
                                   quaternion_to_euler)
 from osdk_construct.control import encode_movement_control
 from osdk_construct.payload import osdk_payload

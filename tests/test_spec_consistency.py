@@ -3,12 +3,18 @@
 spec/*.ksy (byte layout), spec/rules.yaml (rules the layout cannot say) and
 spec/ERRATA.md (decisions where sources disagree) name the same enums, bit
 orders, item sizes and bit fields. These tests read each file on its own
-terms (the ksy through osdk_conformance.ksy, the rules as plain YAML) and
+terms (the ksy through osdk_conformance.core.ksy, the rules as plain YAML) and
 compare, so a change in one that is not made in the others fails here.
+
+The profile ksy files and the profile parts of osdk_payload.ksy are written
+from rules.yaml by tools/gen_profile_ksy.py; the tests below check that they
+are current, and still read them on their own terms, so a generator that
+wrote something else than the rules say would fail here too.
 """
 from __future__ import annotations
 
 import copy
+import importlib.util
 import re
 from pathlib import Path
 from typing import Any, Iterator
@@ -16,16 +22,27 @@ from typing import Any, Iterator
 import pytest
 import yaml
 
-from osdk_conformance import ksy
-from osdk_conformance.trace import Resolver, _pointer
+from osdk_conformance.core import ksy
+from osdk_conformance.core.rules import Rules, ksy_name, load_rules
+from osdk_conformance.traceability.trace import Resolver, _pointer
+from osdk_construct.payload import has_version_id, version_ack_value
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec"
 RULES_PATH = SPEC / "rules.yaml"
 ERRATA_PATH = SPEC / "ERRATA.md"
 PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+PRIMITIVE_SIZES = ksy.PRIMITIVE_SIZES
 
-PRIMITIVE_SIZES = {"u1": 1, "s1": 1, "u2": 2, "s2": 2, "u4": 4, "s4": 4, "f4": 4, "u8": 8, "s8": 8, "f8": 8}
+
+def _gen_tool() -> Any:
+    spec = importlib.util.spec_from_file_location("gen_profile_ksy_under_test", ROOT / "tools" / "gen_profile_ksy.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+GEN = _gen_tool()
 
 
 @pytest.fixture(scope="module")
@@ -36,6 +53,11 @@ def rules() -> dict[str, Any]:
 @pytest.fixture(scope="module")
 def index() -> ksy.KsyIndex:
     return ksy.load()
+
+
+@pytest.fixture(scope="module")
+def loaded() -> Rules:
+    return load_rules()
 
 
 def profile_file(profile: str) -> str:
@@ -58,7 +80,6 @@ SHARED_ENUMS = {
     "enums/control_ack": ("osdk_payload", "control_ack"),
     "enums/frequency_ack": ("osdk_payload", "frequency_ack"),
     "enums/version_ack": ("osdk_payload", "version_ack"),
-    "enums/profile": ("osdk_payload", "profile"),
     "control_mode/fields/0": ("osdk_control_mode", "horizontal_logic"),
     "control_mode/fields/1": ("osdk_control_mode", "vertical_logic"),
     "control_mode/fields/2": ("osdk_control_mode", "yaw_logic"),
@@ -66,6 +87,9 @@ SHARED_ENUMS = {
     "control_mode/fields/4": ("osdk_control_mode", "stable_mode"),
     "frame/enc": ("osdk_frame", "encryption"),
 }
+# The ksy enum made from rules.yaml profiles (their `value`s), compared in
+# test_profile_enum_names_follow_profile_ids.
+PROFILE_ENUM = ("osdk_payload", "profile")
 # ksy enums with no rules.yaml counterpart, and why.
 KSY_ONLY_ENUMS = {
     ("osdk_frame", "command_set"): "command set names only label the dispatch; no rule refers to them",
@@ -101,7 +125,7 @@ def test_control_mode_field_names_are_ksy_enum_names(rules: dict[str, Any], inde
 
 
 def test_every_ksy_enum_is_compared_or_listed(index: ksy.KsyIndex) -> None:
-    compared = set(SHARED_ENUMS.values())
+    compared = set(SHARED_ENUMS.values()) | {PROFILE_ENUM}
     assert set(index.enums) == compared | set(KSY_ONLY_ENUMS)
     assert not compared & set(KSY_ONLY_ENUMS)
 
@@ -124,104 +148,44 @@ def test_encryption_name_and_description(rules: dict[str, Any]) -> None:
 def test_profile_enum_names_follow_profile_ids(rules: dict[str, Any], index: ksy.KsyIndex) -> None:
     ids = list(rules["profiles"])
     assert ids == list(PROFILES)
-    assert index.enums[("osdk_payload", "profile")] == {n: p.replace("-", "_").replace(".", "_") for n, p in enumerate(ids)}
-    # the payload's broadcast switch sends each profile to its own ksy
+    assert [rules["profiles"][p]["value"] for p in ids] == [0, 1, 2]
+    assert index.enums[PROFILE_ENUM] == {rules["profiles"][p]["value"]: p.replace("-", "_").replace(".", "_") for p in ids}
+    # the payload's broadcast switch sends each profile to its own ksy, which it imports
     cases = index.files["osdk_payload"]["types"]["broadcast"]["seq"][0]["type"]["cases"]
     assert cases == {f"profile::{profile_file(p)[len('osdk_broadcast_'):]}": profile_file(p) for p in ids}
+    imports = index.files["osdk_payload"]["meta"]["imports"]
+    assert [i for i in imports if i.startswith("osdk_broadcast_")] == [profile_file(p) for p in ids]
+    broadcast_files = {f for f in index.files if f.startswith("osdk_broadcast_") and f != "osdk_broadcast_items"}
+    assert broadcast_files == {profile_file(p) for p in ids}
 
 
 # ------------------------------------------------------ sizes from the ksy
 
 
-def _parse_type(ref: str, file_id: str) -> tuple[str, str, list[str]]:
-    m = re.fullmatch(r"(?:(\w+)::)?(\w+)(?:\((.*)\))?", ref)
-    assert m, ref
-    args = [a.strip() for a in m.group(3).split(",")] if m.group(3) else []
-    return m.group(1) or file_id, m.group(2), args
-
-
-def _literal(text: str) -> bool | str:
-    """A type argument: a boolean literal, or an enum literal kept as its text."""
-    if text in ("true", "false"):
-        return text == "true"
-    assert re.fullmatch(r"\w+::\w+", text), f"only boolean and enum literal arguments are supported, got {text!r}"
-    return text
-
-
-def _instance_flags(body: dict[str, Any], env: dict[str, Any]) -> dict[str, bool]:
-    """The type's boolean instances of the form `param == enum::x` or `param != enum::x`."""
-    out = {}
-    for name, inst in body.get("instances", {}).items():
-        m = re.fullmatch(r"(\w+) (==|!=) (\w+::\w+)", str(inst.get("value", "")))
-        if m and m.group(1) in env:
-            out[name] = (env[m.group(1)] == m.group(3)) == (m.group(2) == "==")
-    return out
-
-
-def type_size(index: ksy.KsyIndex, file_id: str, type_name: str, args: list[str]) -> int:
-    """Bytes of a ksy user type whose size is fixed once its params are known.
-    The type is one of the file's `types`, or an imported file's top-level type."""
-    local = index.files[file_id].get("types", {})
-    if type_name in local:
-        body = local[type_name]
-    else:
-        assert type_name in index.files[file_id]["meta"].get("imports", []), f"{file_id}: unknown type {type_name}"
-        file_id, body = type_name, index.files[type_name]
-    params = [p["id"] for p in body.get("params", [])]
-    assert len(params) == len(args), f"{file_id}::{type_name} takes {params}, got {args}"
-    env = {p: _literal(a) for p, a in zip(params, args)}
-    return seq_size(index, file_id, body["seq"], {**env, **_instance_flags(body, env)})
-
-
-def field_size(index: ksy.KsyIndex, file_id: str, f: dict[str, Any], env: dict[str, Any]) -> tuple[int, int]:
-    """(bytes, bits) one seq entry occupies; 0 when its `if` is false."""
-    cond = f.get("if")
-    if cond is not None:
-        assert cond in env, f"{f['id']}: condition {cond!r} is not a known boolean"
-        if not env[cond]:
-            return 0, 0
-    t = f.get("type")
-    if isinstance(t, str) and re.fullmatch(r"b\d+", t):
-        return 0, int(t[1:])
-    if "size" in f:
-        assert isinstance(f["size"], int), f"{f['id']}: size {f['size']!r} is not fixed"
-        return f["size"], 0
-    assert isinstance(t, str), f"{f['id']}: no fixed size"
-    if t in PRIMITIVE_SIZES:
-        return PRIMITIVE_SIZES[t], 0
-    return type_size(index, *_parse_type(t, file_id)), 0
-
-
-def seq_size(index: ksy.KsyIndex, file_id: str, seq: list[dict[str, Any]], env: dict[str, Any]) -> int:
-    total, bits = 0, 0
-    for f in seq:
-        nbytes, nbits = field_size(index, file_id, f, env)
-        if nbits:
-            bits += nbits
-            continue
-        if nbytes:
-            assert bits % 8 == 0, f"{f['id']}: bit fields before it do not fill whole bytes"
-            total, bits = total + bits // 8, 0
-        total += nbytes
-    assert bits % 8 == 0, "trailing bit fields do not fill whole bytes"
-    return total + bits // 8
+def _parse_type(ref: str, file_id: str) -> tuple[str, str, list[Any]]:
+    return ksy.parse_type_ref(ref, file_id)
 
 
 def test_size_calculator_on_known_types(index: ksy.KsyIndex) -> None:
+    """The ksy size calculator the rules loader takes item sizes from, on PROTOCOL-FACTS numbers."""
     it = "osdk_broadcast_items"
-    assert type_size(index, it, "time_stamp", ["false"]) == 4
-    assert type_size(index, it, "time_stamp", ["true"]) == 9
-    assert type_size(index, it, "gimbal", ["false"]) == 12
-    assert type_size(index, it, "gimbal", ["true"]) == 13
-    assert type_size(index, it, "control_info", ["false"]) == 1
-    assert type_size(index, it, "control_info", ["true"]) == 2
-    assert type_size(index, it, "velocity", []) == 13
-    assert type_size(index, it, "rtk_detail", []) == 44
-    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::m100_fw2_3"]) == 38   # E30
-    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::m100_fw3_1"]) == 49
-    assert type_size(index, "osdk_payload", "version_ack_value", ["profile::a3_fw3_1"]) == 49
-    assert type_size(index, "osdk_payload", "activation_request", []) == 44
-    assert seq_size(index, "osdk_movement_control", index.files["osdk_movement_control"]["seq"], {}) == 17
+    assert index.ref_size(f"{it}::time_stamp(false)", it) == 4
+    assert index.ref_size(f"{it}::time_stamp(true)", it) == 9
+    assert index.type_size(it, "gimbal", {"has_limit_byte": False}) == 12
+    assert index.type_size(it, "gimbal", {"has_limit_byte": True}) == 13
+    assert index.type_size(it, "control_info", {"has_mode": False}) == 1
+    assert index.type_size(it, "control_info", {"has_mode": True}) == 2
+    assert index.type_size(it, "velocity") == 13
+    assert index.type_size(it, "rtk_detail") == 44
+    assert index.ref_size("version_ack_value(profile::m100_fw2_3)", "osdk_payload") == 38   # E30
+    assert index.ref_size("version_ack_value(profile::m100_fw3_1)", "osdk_payload") == 49
+    assert index.ref_size("version_ack_value(profile::a3_fw3_1)", "osdk_payload") == 49
+    assert index.type_size("osdk_payload", "activation_request") == 44
+    assert index.seq_size("osdk_movement_control", index.files["osdk_movement_control"]["seq"], {}) == 17
+    with pytest.raises(ksy.KsyError, match=r"takes params \['has_limit_byte'\], got \[\]"):
+        index.type_size(it, "gimbal")
+    with pytest.raises(ksy.KsyError, match="not a known boolean"):
+        index.seq_size(it, index.files[it]["types"]["gimbal"]["seq"], {})
 
 
 def _broadcast_items(index: ksy.KsyIndex, profile: str) -> tuple[list[str], list[dict[str, Any]]]:
@@ -247,16 +211,172 @@ def test_flag_bit_order_matches_ksy(rules: dict[str, Any], index: ksy.KsyIndex, 
 def ksy_item_sizes(index: ksy.KsyIndex, profile: str) -> dict[str, int]:
     """Size of each broadcast item of a profile, computed from its ksy."""
     _, items = _broadcast_items(index, profile)
-    return {f["id"]: field_size(index, profile_file(profile), {**f, "if": None}, {})[0] for f in items}
+    return {f["id"]: index.field_size(profile_file(profile), {**f, "if": None}, {})[0] for f in items}
+
+
+# PROTOCOL-FACTS §3, item by item in flag-bit order.
+FACTS_SIZES = {
+    "m100-fw2.3": [4, 16, 12, 13, 12, 25, 6, 12, 12, 1, 1, 1],
+    "m100-fw3.1": [9, 16, 12, 13, 12, 25, 6, 12, 13, 1, 1, 2],
+    "a3-fw3.1": [9, 16, 12, 13, 12, 25, 32, 44, 6, 12, 13, 1, 1, 2],
+}
 
 
 @pytest.mark.parametrize("profile", PROFILES)
-def test_item_sizes_match_ksy(rules: dict[str, Any], index: ksy.KsyIndex, profile: str) -> None:
+def test_item_sizes_match_ksy(loaded: Rules, index: ksy.KsyIndex, profile: str) -> None:
+    """The profile's ksy file, read on its own, gives the sizes the rules
+    compute from item_params, and both are PROTOCOL-FACTS' sizes."""
     from_ksy = ksy_item_sizes(index, profile)
+    p = loaded.profile(profile)
+    assert from_ksy == dict(p.item_sizes)
+    assert list(from_ksy.values()) == FACTS_SIZES[profile]
+    assert (p.time_stamp_size, p.gimbal_size, p.control_info_size) == (
+        from_ksy["time_stamp"], from_ksy["gimbal"], from_ksy["control_info"])
+
+
+@pytest.mark.parametrize("profile", PROFILES)
+def test_profile_ksy_items_are_the_rules_items(rules: dict[str, Any], index: ksy.KsyIndex, profile: str) -> None:
+    """Each item of a profile's ksy has the type, params and doc rules.yaml gives it."""
     p = rules["profiles"][profile]
-    assert from_ksy == p["item_sizes"]
-    assert (from_ksy["time_stamp"], from_ksy["gimbal"], from_ksy["control_info"]) == (
-        p["time_stamp_size"], p["gimbal_size"], p["control_info_size"])
+    _, items = _broadcast_items(index, profile)
+    for f in items:
+        spec = rules["broadcast_items"][f["id"]]
+        assert f["doc"] == spec["doc"]
+        if spec["type"] == "u1":
+            assert f["type"] == "u1"
+            continue
+        file_id, type_name, args = _parse_type(f["type"], profile_file(profile))
+        assert (file_id, type_name) == ("osdk_broadcast_items", spec["type"])
+        assert dict(zip(spec.get("params", []), args)) == p["item_params"].get(f["id"], {})
+        assert len(args) == len(spec.get("params", []))
+
+
+# ------------------------------------------- generated from rules.yaml
+
+
+def test_generated_ksy_is_current() -> None:
+    """spec/osdk_broadcast_<profile>.ksy and the marked parts of osdk_payload.ksy
+    are what tools/gen_profile_ksy.py writes from rules.yaml (`make regen`)."""
+    assert GEN.drift() == []
+
+
+def test_generated_ksy_says_so(rules: dict[str, Any]) -> None:
+    for profile in rules["profiles"]:
+        assert (SPEC / f"{profile_file(profile)}.ksy").read_text(encoding="utf-8").startswith(GEN.FILE_MARK + "\n")
+    for path in SPEC.glob("*.ksy"):
+        if not path.name.startswith("osdk_broadcast_") or path.name == "osdk_broadcast_items.ksy":
+            assert GEN.FILE_MARK not in path.read_text(encoding="utf-8"), path.name
+    parts = [m.group("part") for m in GEN.REGION.finditer((SPEC / "osdk_payload.ksy").read_text(encoding="utf-8"))]
+    assert parts == ["imports", "version id", "broadcast cases", "profile enum"]
+
+
+@pytest.fixture()
+def spec_copy(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The generator pointed at a copy of spec/."""
+    spec = tmp_path / "spec"
+    spec.mkdir()
+    for path in SPEC.glob("*.ksy"):
+        (spec / path.name).write_bytes(path.read_bytes())
+    monkeypatch.setattr(GEN, "ROOT", tmp_path)
+    monkeypatch.setattr(GEN, "SPEC", spec)
+    monkeypatch.setattr(GEN, "PAYLOAD", spec / "osdk_payload.ksy")
+    return spec
+
+
+def test_drift_is_found_and_repaired(spec_copy: Path) -> None:
+    payload = spec_copy / "osdk_payload.ksy"
+    original = payload.read_text(encoding="utf-8")
+    payload.write_text(original.replace("            profile::a3_fw3_1: osdk_broadcast_a3_fw3_1\n", ""), encoding="utf-8")
+    m100 = spec_copy / "osdk_broadcast_m100_fw3_1.ksy"
+    m100_text = m100.read_text(encoding="utf-8")
+    m100.write_text(m100_text.replace("time_stamp(true)", "time_stamp(false)"), encoding="utf-8")
+    stale = spec_copy / "osdk_broadcast_n3_fw3_1.ksy"
+    stale.write_text(m100_text, encoding="utf-8")
+    assert GEN.drift() == [
+        "spec/osdk_broadcast_m100_fw3_1.ksy differs from what rules.yaml gives",
+        "spec/osdk_broadcast_n3_fw3_1.ksy is generated for a profile that rules.yaml no longer has",
+        "spec/osdk_payload.ksy differs from what rules.yaml gives",
+    ]
+    assert sorted(p.name for p in GEN.write()) == [
+        "osdk_broadcast_m100_fw3_1.ksy", "osdk_broadcast_n3_fw3_1.ksy", "osdk_payload.ksy"]
+    assert payload.read_text(encoding="utf-8") == original
+    assert m100.read_text(encoding="utf-8") == m100_text
+    assert not stale.exists()
+    assert (spec_copy / "osdk_broadcast_items.ksy").exists()  # hand-written: never touched
+    assert GEN.drift() == []
+
+
+def test_a_region_marker_is_required(spec_copy: Path) -> None:
+    payload = spec_copy / "osdk_payload.ksy"
+    text = payload.read_text(encoding="utf-8")
+    payload.write_text(text.replace("(broadcast cases): do not edit", "(broadcast cases): edit"), encoding="utf-8")
+    with pytest.raises(SystemExit, match=r"must mark each of .* \(missing \['broadcast cases'\], repeated \[\]\)"):
+        GEN.drift()
+
+
+def test_a_new_profile_is_generated_from_the_rules(tmp_path: Path, rules: dict[str, Any]) -> None:
+    """A fourth profile, written in rules.yaml only, gets its ksy file, its
+    enum value and its switch case."""
+    data = copy.deepcopy(rules)
+    data["profiles"]["m600-fw3.2"] = {**copy.deepcopy(data["profiles"]["a3-fw3.1"]), "value": 3}
+    data["profiles"]["m600-fw3.2"]["covers"] = {**data["profiles"]["a3-fw3.1"]["covers"], "aircraft": ["M600"],
+                                                "sdk_version": 0x03020A00}
+    data["control_mode"]["bit0_by_profile"]["m600-fw3.2"] = data["control_mode"]["bit0_by_profile"]["a3-fw3.1"]
+    data["control_modes"]["profile_ranges"]["m600-fw3.2"] = "seed"
+    for c in data["control_modes"]["combinations"]:
+        c["ranges"] = {**c["ranges"], "m600-fw3.2": c["ranges"]["a3-fw3.1"]}
+    path = tmp_path / "rules.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    want = GEN.outputs(load_rules(path))
+    text = want[SPEC / "osdk_broadcast_m600_fw3_2.ksy"]
+    doc = yaml.safe_load(text)
+    assert doc["meta"]["id"] == "osdk_broadcast_m600_fw3_2"
+    assert doc["meta"]["application"] == "M600 with firmware 3.2 (OSDK 3.2)"
+    assert [f["id"] for f in doc["seq"]][:14] == [f"has_{i}" for i in data["profiles"]["a3-fw3.1"]["flag_bits"]]
+    a3 = want[SPEC / "osdk_broadcast_a3_fw3_1.ksy"]
+    assert text.split("seq:\n", 1)[1] == a3.split("seq:\n", 1)[1]   # same items, same params
+    payload = yaml.safe_load(want[SPEC / "osdk_payload.ksy"])
+    assert payload["enums"]["profile"][3] == {"id": "m600_fw3_2", "doc": "m600-fw3.2, M600 with firmware 3.2."}
+    assert payload["types"]["broadcast"]["seq"][0]["type"]["cases"]["profile::m600_fw3_2"] == "osdk_broadcast_m600_fw3_2"
+    assert payload["meta"]["imports"][-1] == "osdk_broadcast_m600_fw3_2"
+
+
+# ERRATA E30: the version ACK of FW 3.1 firmware carries an 11-byte version
+# ID between the CRC and the name (49 bytes); M100 FW 2.3's does not (38).
+FACTS_VERSION_ACK_SIZE = {"m100-fw2.3": 38, "m100-fw3.1": 49, "a3-fw3.1": 49}
+
+
+@pytest.mark.parametrize("profile", PROFILES)
+def test_version_ack_layout_follows_the_rules(rules: dict[str, Any], index: ksy.KsyIndex, profile: str) -> None:
+    """rules.yaml says per profile whether the version ACK has the ID; the
+    ksy's has_version_id (generated from it) and Construct's agree, in size."""
+    version_id = rules["profiles"][profile]["version_ack"]["version_id"]
+    size = index.ref_size(f"version_ack_value(profile::{ksy_name(profile)})", "osdk_payload")
+    assert size == FACTS_VERSION_ACK_SIZE[profile] == 38 + 11 * version_id
+    assert has_version_id(profile) is version_id
+    assert version_ack_value(profile).sizeof() == size
+    assert "E30" in _cited(rules["profiles"][profile]["version_ack"]["source"])
+
+
+def _payload_with_version_ids(tmp_path: Path, rules: dict[str, Any], version_ids: dict[str, bool]) -> dict[str, Any]:
+    """osdk_payload.ksy as the generator writes it from rules.yaml with other version_ack.version_id values."""
+    data = copy.deepcopy(rules)
+    for profile, version_id in version_ids.items():
+        data["profiles"][profile]["version_ack"] = {"version_id": version_id, "source": "decision: test"}
+    path = tmp_path / "rules.yaml"
+    path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
+    return yaml.safe_load(GEN.outputs(load_rules(path))[SPEC / "osdk_payload.ksy"])
+
+
+@pytest.mark.parametrize(("version_ids", "expr"), [
+    ({}, "profile != profile::m100_fw2_3"),
+    ({"m100-fw3.1": False}, "profile != profile::m100_fw2_3 and profile != profile::m100_fw3_1"),
+    ({"m100-fw2.3": True}, "true"),
+])
+def test_has_version_id_is_generated_from_the_rules(tmp_path: Path, rules: dict[str, Any],
+                                                   version_ids: dict[str, bool], expr: str) -> None:
+    payload = _payload_with_version_ids(tmp_path, rules, version_ids)
+    assert payload["types"]["version_ack_value"]["instances"]["has_version_id"]["value"] == expr
 
 
 # --------------------------------------------------------------- bit fields
@@ -312,14 +432,14 @@ UNIT_ALIASES = {
 
 
 def test_unit_fields_name_ksy_fields(rules: dict[str, Any], index: ksy.KsyIndex) -> None:
-    a3 = {f["id"]: f for f in index.files[profile_file("a3-fw3.1")]["seq"]}
-    assert set(rules["units"]["items"]) == set(rules["profiles"]["a3-fw3.1"]["flag_bits"])
+    assert set(rules["units"]["items"]) == set(rules["broadcast_items"])
     for item, spec in rules["units"]["items"].items():
-        t = a3[item].get("type")
+        profile = next(p for p, v in rules["profiles"].items() if item in v["flag_bits"])
+        t = next(f for f in index.files[profile_file(profile)]["seq"] if f["id"] == item).get("type")
         if t in PRIMITIVE_SIZES:  # a bare byte: the item is its own single field
             assert list(spec["fields"]) == [item]
             continue
-        _, type_name, _ = _parse_type(t, "osdk_broadcast_a3_fw3_1")
+        _, type_name, _ = _parse_type(t, profile_file(profile))
         ksy_fields = {f["id"] for f in index.files["osdk_broadcast_items"]["types"][type_name]["seq"]}
         for name in spec["fields"]:
             assert UNIT_ALIASES.get((item, name), {name}) <= ksy_fields, f"units.items.{item}.fields.{name}"
@@ -453,15 +573,16 @@ def test_size_comparison_bites(tmp_path: Path, rules: dict[str, Any]) -> None:
     # the gimbal limit byte grows by one bit: 9 bits no longer fill whole bytes
     index = _ksy_copy(tmp_path, {"osdk_broadcast_items.ksy": (
         "      - id: reserved\n        type: b5", "      - id: reserved\n        type: b6")})
-    with pytest.raises(AssertionError, match="whole bytes"):
+    with pytest.raises(ksy.KsyError, match="whole bytes"):
         ksy_item_sizes(index, "a3-fw3.1")
     assert ksy_item_sizes(index, "m100-fw2.3")["gimbal"] == 12  # no limit byte on FW 2.3
 
 
-def test_size_and_order_comparison_bite_on_a_changed_profile(tmp_path: Path, rules: dict[str, Any]) -> None:
+def test_size_and_order_comparison_bite_on_a_changed_profile(tmp_path: Path, rules: dict[str, Any],
+                                                            loaded: Rules) -> None:
     index = _ksy_copy(tmp_path, {"osdk_broadcast_m100_fw3_1.ksy": (
         "osdk_broadcast_items::time_stamp(true)", "osdk_broadcast_items::time_stamp(false)")})
     sizes = ksy_item_sizes(index, "m100-fw3.1")
-    assert sizes["time_stamp"] == 4 != rules["profiles"]["m100-fw3.1"]["item_sizes"]["time_stamp"]
+    assert sizes["time_stamp"] == 4 != loaded.profile("m100-fw3.1").item_sizes["time_stamp"]
     flags, _ = _broadcast_items(index, "m100-fw3.1")
     assert flags == rules["profiles"]["m100-fw3.1"]["flag_bits"]

@@ -4,7 +4,7 @@ reads; checked on the Python deframer directly and on every bundled
 implementation through its decode_stream operation.
 
 When the property holds, and why it needs a precondition. The receiver
-(the SDK's rule, osdk_conformance/deframe.py) only ever looks for a frame at
+(the SDK's rule, osdk_conformance/core/deframe.py) only ever looks for a frame at
 the position where its scan stands, and the scan moves forward in three
 ways: past bytes that are not a start byte (it stops at the next 0xAA), by
 ONE byte after any rejection (bad header, bad CRC-32, or a frame cut short
@@ -47,12 +47,12 @@ from functools import cache
 import pytest
 from hypothesis import HealthCheck, assume, given, note, settings, strategies as st
 
-from osdk_conformance.crc import crc16, crc32
-from osdk_conformance.deframe import (HEADER_LEN, MAX_LEN, SOF, Frame, deframe, frame_length, header_problem,
+from osdk_conformance.core.crc import crc16, crc32
+from osdk_conformance.core.deframe import (HEADER_LEN, MAX_LEN, SOF, Frame, deframe, frame_length, header_problem,
                                       split_chunks)
-from osdk_conformance.reference import PROFILES, answer
-from osdk_conformance.rules import profile as rules_profile
-from osdk_conformance.vectors import VECTORS_DIR, difference, load_cases
+from osdk_conformance.reference.codec import PROFILES, answer
+from osdk_conformance.core.rules import profile as rules_profile
+from osdk_conformance.harness.vectors import VECTORS_DIR, difference, load_cases
 from osdk_construct import build_frame
 from osdk_construct.frame import CRC32_LEN
 
@@ -201,8 +201,8 @@ def test_a_frame_that_covers_the_start_hides_it():
 @pytest.fixture(scope="module")
 def implementations():
     """Every bundled implementation, started once for the module."""
-    from osdk_conformance.fuzz import start_fuzzees, stop_fuzzees
-    from osdk_conformance.runner import BUNDLED_IMPLS, impl_argv
+    from osdk_conformance.harness.fuzz import start_fuzzees, stop_fuzzees
+    from osdk_conformance.harness.runner import BUNDLED_IMPLS, impl_argv
 
     started = start_fuzzees([(name, impl_argv(name)) for name in BUNDLED_IMPLS])
     yield started

@@ -3,6 +3,7 @@ reproducible, and guarded against tampering; compare() as the runner uses it."""
 from __future__ import annotations
 
 import hashlib
+import importlib
 import json
 import shutil
 import subprocess
@@ -11,11 +12,12 @@ from pathlib import Path
 
 import pytest
 
-from osdk_conformance import reference
-from osdk_conformance.paths import ROOT
-from osdk_conformance.spec_rules import RULES
-from osdk_conformance.trace import errata_ids
-from osdk_conformance.vectors import (
+from osdk_conformance.reference import codec as reference
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.rules import profile as rules_profile
+from osdk_conformance.harness.spec_rules import RULES
+from osdk_conformance.traceability.trace import errata_ids
+from osdk_conformance.harness.vectors import (
     MANIFEST_NAME, VECTORS_DIR, Case, compare, coverage_counts, load_cases, manifest_text, suite_files,
 )
 
@@ -86,16 +88,12 @@ def test_coverage_fails_when_something_is_unpinned(tmp_path):
 
 
 def test_a_wrong_hand_written_expectation_stops_the_generator():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import gen_vectors
-    finally:
-        sys.path.pop(0)
-    s = gen_vectors.Suite("t", "t", seed=1)
-    with pytest.raises(gen_vectors.GenerationError, match="disagrees with the reference"):
+    builder = _vectorgen("builder")
+    s = builder.Suite("t", "t", seed=1)
+    with pytest.raises(builder.GenerationError, match="disagrees with the reference"):
         s.add("classify_control_mode", "a3-fw3.1", "t.a3.x", "t.c", "c", {"byte": 0x4B}, ["E15"],
               expected={"fields": {}, "classification": "documented", "combination": 4})
-    with pytest.raises(gen_vectors.GenerationError, match="written error"):
+    with pytest.raises(builder.GenerationError, match="written error"):
         s.add("decode_frame", "a3-fw3.1", "t.a3.y", "t.c", "c", {"hex": "aa"}, ["E22"], error="bad_crc16")
 
 
@@ -122,7 +120,7 @@ def test_required_coverage_is_present(cases):
         # all 256 mode bytes per profile
         assert {f"control_mode.{profile}.0x{b:02x}" for b in range(256)} <= by_op_profile[("classify_control_mode", profile)]
         # every flag word of every profile at least once
-        bits = 14 if profile == "a3-fw3.1" else 12
+        bits = len(rules_profile(profile).flag_bits)
         ids = by_op_profile[("decode_payload", profile)]
         for flags in range(1 << bits):
             base = f"broadcast.{profile}.flags.0x{flags:04x}"
@@ -229,7 +227,7 @@ def test_run_vectors_rejects_what_vectors_check_rejects(tmp_path, old, new):
     and name the same first problem."""
     import io
 
-    from osdk_conformance.vectors import VectorFileError, check, load_checked_cases
+    from osdk_conformance.harness.vectors import VectorFileError, check, load_checked_cases
 
     d = small_copy(tmp_path)
     f = d / "payloads.json"
@@ -248,7 +246,7 @@ def test_run_vectors_rejects_what_vectors_check_rejects(tmp_path, old, new):
 
 
 def test_checked_loading_of_the_shipped_vectors_gives_every_case(cases):
-    from osdk_conformance.vectors import load_checked_cases
+    from osdk_conformance.harness.vectors import load_checked_cases
 
     assert load_checked_cases() == cases
 
@@ -334,8 +332,8 @@ def test_requests_carry_the_profile_only_where_the_operation_takes_one(cases):
 def test_every_errata_entry_names_a_vector_that_exists_and_pins_it():
     import re
 
-    from osdk_conformance.paths import SPEC
-    from osdk_conformance.vectors import load_cases
+    from osdk_conformance.core.paths import SPEC
+    from osdk_conformance.harness.vectors import load_cases
 
     text = (SPEC / "ERRATA.md").read_text()
     named = dict(re.findall(r"^## (E\d+):.*?^- \*\*Vectors:\*\* `([^`]+)`", text, flags=re.M | re.S))
@@ -347,20 +345,20 @@ def test_every_errata_entry_names_a_vector_that_exists_and_pins_it():
         assert entry in by_id[case_id].flags, f"{entry}: vector {case_id} does not flag {entry}"
 
 
-# ------------------------------------------------------------ bug classes (osdk_conformance.vector_tables)
+# ------------------------------------------------------------ bug classes (osdk_conformance.harness.vector_tables)
 
 
-def _gen_vectors():
+def _vectorgen(module: str):
+    """A module of the generator's package (tools/vectorgen; tools/ is not a package)."""
     sys.path.insert(0, str(ROOT / "tools"))
     try:
-        import gen_vectors
+        return importlib.import_module(f"vectorgen.{module}")
     finally:
         sys.path.pop(0)
-    return gen_vectors
 
 
 def test_no_bug_class_table_has_a_hole(cases):
-    from osdk_conformance.vector_tables import tables
+    from osdk_conformance.harness.vector_tables import tables
 
     holes = {t.title: t.holes for t in tables(cases)}
     assert holes == {title: [] for title in holes}, holes
@@ -376,7 +374,7 @@ def test_no_bug_class_table_has_a_hole(cases):
 def test_each_table_shows_holes_without_its_cases(cases, prefix, title):
     """The tables count what the bytes exercise: without the cases generated
     for a class, its table has holes again (as it had before they existed)."""
-    from osdk_conformance.vector_tables import tables
+    from osdk_conformance.harness.vector_tables import tables
 
     rest = [c for c in cases if prefix not in c.id]
     assert len(rest) < len(cases)
@@ -385,7 +383,7 @@ def test_each_table_shows_holes_without_its_cases(cases, prefix, title):
 
 
 def test_movement_precedence_holes_without_its_cases(cases):
-    from osdk_conformance.vector_tables import movement_table
+    from osdk_conformance.harness.vector_tables import movement_table
 
     rest = [c for c in cases if c.operation == "check_movement_control" and ".precedence." not in c.id]
     assert set(movement_table(rest).holes) >= {"invalid x length + mode", "documented x length + range"}
@@ -393,9 +391,9 @@ def test_movement_precedence_holes_without_its_cases(cases):
 
 def test_broken_rules_judges_each_rule_on_its_own():
     """Each breaker of the generator breaks its rule, and in a stream nothing else."""
-    from osdk_conformance.vector_tables import FRAME_RULES, broken_rules
+    from osdk_conformance.harness.vector_tables import FRAME_RULES, broken_rules
 
-    gen = _gen_vectors()
+    gen = _vectorgen("precedence")
     for rule in FRAME_RULES:
         for tag, breaker in gen.BREAKERS[rule.name].items():
             data = gen.broken_frame([breaker])
@@ -403,11 +401,11 @@ def test_broken_rules_judges_each_rule_on_its_own():
             if "decode_stream" in rule.contexts:
                 assert broken_rules(data, "a3-fw3.1", "decode_stream") == {rule.name}, (rule.name, tag)
     assert set(gen.BREAKERS) == {r.name for r in FRAME_RULES}
-    assert broken_rules(gen.GOOD_FRAME, "a3-fw3.1", "decode_frame") == set()
+    assert broken_rules(_vectorgen("wire").GOOD_FRAME, "a3-fw3.1", "decode_frame") == set()
 
 
 def test_every_stream_error_class_is_produced_in_a_stream(cases):
-    from osdk_conformance.vector_tables import NOT_IN_STREAMS, frame_error_classes, stream_error_classes
+    from osdk_conformance.harness.vector_tables import NOT_IN_STREAMS, frame_error_classes, stream_error_classes
 
     assert {"bad_crc16", "bad_crc32", "truncated_frame", "bad_session", "length_mismatch"} <= set(stream_error_classes())
     assert set(frame_error_classes()) == set(stream_error_classes()) | (set(NOT_IN_STREAMS) & set(frame_error_classes()))

@@ -6,7 +6,8 @@ usage: tools/fuzz_corpus.py {deframer,broadcast} OUT_DIR [--limit N] [--length-p
 deframer:  every decode_stream and decode_frame input, prefixed with the
            byte the target reads first (profile and read size); the seeds of
            every stream target (C fuzz_deframer, Python fuzz/fuzz_decode.py,
-           Go FuzzDecodeStream), which all read their input as stream_input does;
+           Go FuzzDecodeStream), which all read their input as stream_input
+           and stream_reads below do (tools/fuzz_to_vector.py as well);
 broadcast: every broadcast value of a decode_payload case.
 One file per distinct input, named by its SHA-1, so reruns are idempotent.
 --length-prefix puts each seed behind its length in 4 big-endian bytes: how
@@ -23,9 +24,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from osdk_conformance.vectors import load_cases  # noqa: E402
+from osdk_conformance.core.deframe import split_chunks  # noqa: E402
+from osdk_conformance.core.rules import profile_names  # noqa: E402
+from osdk_conformance.harness.vectors import load_cases  # noqa: E402
 
-PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")  # the order of osdk_profile_ids
+PROFILES = profile_names()
+"""The profiles in value order, as the generated tables list them (C
+osdk_profile_ids, the Go testee's tables): the order the selector byte indexes."""
 
 
 def stream_input(data: bytes) -> tuple[str, int, bytes] | None:
@@ -35,6 +40,17 @@ def stream_input(data: bytes) -> tuple[str, int, bytes] | None:
     if not data:
         return None
     return PROFILES[data[0] % len(PROFILES)], (data[0] >> 2) + 1, data[1:]
+
+
+def stream_reads(data: bytes) -> tuple[str, list[bytes]] | None:
+    """(profile, reads) of a stream target's input: the stream cut into
+    reads of the size the selector byte picked, what they leave over one
+    last read; None when the input is empty."""
+    parsed = stream_input(data)
+    if parsed is None:
+        return None
+    profile, size, stream = parsed
+    return profile, split_chunks(stream, [size] * (len(stream) // size))
 
 
 def stream_seed(profile: str, stream: bytes) -> bytes:

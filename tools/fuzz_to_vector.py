@@ -4,15 +4,15 @@
 usage: tools/fuzz_to_vector.py --target TARGET (ARTIFACT ... | --hex HEX) [--out FILE] [--why TEXT]
 
 TARGET says how the fuzz target read its input (docs/FUZZING.md):
-  deframer   C fuzz_deframer (libFuzzer)        a stream input (tools/fuzz_corpus.py stream_input)
+  deframer   C fuzz_deframer (libFuzzer)        a stream input (tools/fuzz_corpus.py stream_reads)
   decode     Python fuzz/fuzz_decode.py (atheris)  a stream input; a pcapng capture is replaced by its received bytes
   go         Go FuzzDecodeStream (go test -fuzz)   a stream input
   broadcast  C fuzz_broadcast (libFuzzer)       a broadcast value, decoded in every profile
 A stream input becomes one decode_stream case (the profile and the reads
 the target used); a broadcast value one decode_payload case per profile.
-Each case's expectation is the reference's answer (osdk_conformance.reference,
+Each case's expectation is the reference's answer (osdk_conformance.reference.codec,
 the Construct spec), made by the same function as `osdkc fuzz` uses for a
-disagreement (osdk_conformance.fuzz.regression_vector).
+disagreement (osdk_conformance.harness.fuzz.regression_vector).
 
 An ARTIFACT is a libFuzzer/atheris file (crash-*, leak-*, timeout-*, oom-*:
 the raw input) or a Go corpus file (testdata/fuzz/FuzzDecodeStream/*:
@@ -21,9 +21,9 @@ printed by the Go target's failure message.
 
 Output: a vector file (vectors/FORMAT.md) on standard output or in --out,
 to replay at once with `osdkc run --impl all --vectors FILE`; on standard
-error, the tools/gen_vectors.py line for each case, to paste into the
-suite's generator (gen_streams, gen_broadcast) so that the case becomes a
-golden vector. Exit status 0; 2 for an unreadable artifact or bad arguments.
+error, the generator line for each case, to paste into the suite's module
+(tools/vectorgen/streams.py, tools/vectorgen/broadcast.py) so that the case
+becomes a golden vector. Exit status 0; 2 for an unreadable artifact or bad arguments.
 """
 from __future__ import annotations
 
@@ -36,12 +36,13 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tools"))
 
-from fuzz_corpus import PROFILES, stream_input  # noqa: E402
+from fuzz_corpus import PROFILES, stream_reads  # noqa: E402
 
 TARGETS = {"deframer": "C fuzz_deframer (libFuzzer)", "decode": "Python fuzz/fuzz_decode.py (atheris)",
            "go": "Go FuzzDecodeStream (go test -fuzz)", "broadcast": "C fuzz_broadcast (libFuzzer)"}
 GO_HEADER = "go test fuzz v1"
-SUITE_OF = {"decode_stream": "gen_streams", "decode_payload": "gen_broadcast"}
+SUITE_OF = {"decode_stream": "tools/vectorgen/streams.py", "decode_payload": "tools/vectorgen/broadcast.py"}
+"""Where the generator builds the cases of an operation, for the line to paste."""
 
 
 class BadInput(Exception):
@@ -112,15 +113,13 @@ def read_artifact(path: Path) -> bytes:
 # ---------------------------------------------------------------- inputs to cases
 
 def stream_case(target: str, data: bytes) -> list[tuple[str, str, dict]]:
-    from osdk_conformance.decode import received_bytes
-    from osdk_conformance.deframe import split_chunks
-    from osdk_conformance.errors import UsageError
+    from osdk_conformance.core.errors import UsageError
+    from osdk_conformance.reference.decode import received_bytes
 
-    parsed = stream_input(data)
+    parsed = stream_reads(data)
     if parsed is None:
         raise BadInput("an empty input: the stream targets ignore it")
-    profile, size, stream = parsed
-    reads = split_chunks(stream, [size] * (len(stream) // size))
+    profile, reads = parsed
     if target == "decode":  # what fuzz_decode.py decoded: a capture's received bytes
         try:
             reads = list(received_bytes(reads))
@@ -155,7 +154,7 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--out", type=Path, help="write the vector file here (default: standard output)")
     ap.add_argument("--why", help="what went wrong, for the cases' comment")
     args = ap.parse_args(argv)
-    from osdk_conformance.fuzz import regression_vector, suite_document
+    from osdk_conformance.harness.fuzz import regression_vector, suite_document
 
     try:
         if bool(args.artifacts) == (args.hex is not None):

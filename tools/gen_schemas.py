@@ -16,9 +16,20 @@ usage: tools/gen_schemas.py [--check]
   profile where the result depends on it.
 
 Error classes, operations and command names come from
-osdk_conformance.response_schema and osdk_conformance.commands, profiles
-and control mode combinations from spec/rules.yaml. --check regenerates in
-memory and fails (exit 1) when the checked-in files differ.
+osdk_conformance.harness.response_schema and osdk_conformance.core.commands, profiles
+and control mode combinations from spec/rules.yaml.
+
+It also writes the parts of docs/NAMING.md (the profiles, the control mode
+byte, the broadcast item names, where the version ID is, the enums) and of
+conformance/PROTOCOL.md (the profile ids, the version ACK per profile, the
+flag bit table, the broadcast item variants, the control mode findings and
+what bit 0 is per profile, how many mode bytes each profile documents, the
+input range table) that restate the spec, each
+between `<!-- NAME:begin (tools/gen_schemas.py writes this part) -->` and
+`<!-- NAME:end -->`; the rest of those files is prose it leaves alone.
+
+--check regenerates in memory and fails (exit 1) when the checked-in files
+differ.
 """
 from __future__ import annotations
 
@@ -26,16 +37,17 @@ import argparse
 import json
 import re
 import sys
+import textwrap
 from pathlib import Path
 from typing import Any
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from osdk_conformance import ksy, rules  # noqa: E402
-from osdk_conformance.commands import COMMANDS  # noqa: E402
-from osdk_conformance.model import SKIPPED_FIELDS  # noqa: E402
-from osdk_conformance.response_schema import (  # noqa: E402
+from osdk_conformance.core import ksy, rules  # noqa: E402
+from osdk_conformance.core.commands import COMMANDS  # noqa: E402
+from osdk_conformance.core.model import SKIPPED_FIELDS  # noqa: E402
+from osdk_conformance.harness.response_schema import (  # noqa: E402
     BASE_URI, ERROR_CLASSES, OPERATION_ERRORS, SCHEMA_DIR, STREAM_ERRORS, UNIVERSAL_ERRORS,
 )
 
@@ -58,7 +70,9 @@ class ValueModel:
     def __init__(self) -> None:
         self.index = ksy.load()
         self.r = rules.default_rules()
-        self.profile_ids = {i: p for i, p in enumerate(self.r.profile_names)}  # ksy enum value -> id
+        # profile id -> its name in the ksy enum `profile`, by the profile's value
+        profile_enum = self.index.enums[("osdk_payload", "profile")]
+        self.ksy_profiles = {p: profile_enum[self.r.profile(p).value] for p in self.r.profile_names}
         self.defs: dict[str, Any] = {}
 
     # -- names
@@ -209,17 +223,12 @@ class ValueModel:
             out["allOf"] = conditions
         return out
 
-    @staticmethod
-    def _instance_flags(body: dict, profile: str | None) -> dict[str, bool]:
-        """The type's value instances of the form `profile == profile::x` or
-        `profile != profile::x`, decided for the profile the schema is for."""
-        out = {}
-        for name, inst in body.get("instances", {}).items():
-            m = re.fullmatch(r"profile (==|!=) profile::(\w+)", str(inst.get("value", "")).strip())
-            if m and profile is not None:
-                same = profile.replace("-", "_").replace(".", "_") == m.group(2)
-                out[name] = same == (m.group(1) == "==")
-        return out
+    def _instance_flags(self, body: dict, profile: str | None) -> dict[str, bool]:
+        """The type's instances that compare the profile with enum values,
+        decided for the profile the schema is for."""
+        if profile is None:
+            return {}
+        return ksy.instance_flags(body, {"profile": f"profile::{self._ksy_profile(profile)}"})
 
     def _presence(self, f: dict, bound: dict[str, Any], siblings: dict, flags: dict[str, bool]) -> Any:
         """True (always present), False (never) or an `if` schema on the
@@ -355,7 +364,7 @@ class ValueModel:
                           for k, g in groups.items()]}, []
 
     def _ksy_profile(self, profile: str | None) -> str | None:
-        return profile.replace("-", "_").replace(".", "_") if profile else None
+        return self.ksy_profiles[profile] if profile else None
 
 
 def _one_line(text: str) -> str:
@@ -619,6 +628,7 @@ def operation_schemas(vm: ValueModel) -> dict[str, dict]:
                                       "properties": {"hex": {"description": "the whole frame", "type": "string",
                                                              "pattern": "^aa([0-9a-f]{2}){11,}$"}}}}
 
+    version_id = optional_field(vm, VERSION_ACK, "version_id")
     out = {}
     for op, defs in ops.items():
         results = {k: v for k, v in defs.items() if k.startswith("result")}
@@ -627,14 +637,36 @@ def operation_schemas(vm: ValueModel) -> dict[str, dict]:
         out[op] = _doc(f"{op}.schema.json", f"osdk testee protocol: {op}",
                        f"Request and response of `{op}` (conformance/PROTOCOL.md). $defs/request is the request "
                        "line; $defs/response (or $defs/response.<profile> for an operation whose result depends "
-                       "on the profile: the broadcast layout, and the version ACK's version_id on m100-fw3.1 and "
-                       "a3-fw3.1, ERRATA E30) a response line. Generated by tools/gen_schemas.py.",
+                       "on the profile: the broadcast layout, and the version ACK's version_id on "
+                       f"{_and(version_id['on'])}, ERRATA E30) a response line. Generated by tools/gen_schemas.py.",
                        defs)
     return out
 
 
-def schemas() -> dict[str, dict]:
-    vm = ValueModel()
+VERSION_ACK = ("osdk_payload", ("version_ack_value",))
+
+
+def optional_field(vm: ValueModel, key, fid: str) -> dict[str, Any]:
+    """Where a field that only some profiles have is present: the profiles
+    with it ("on") and without it ("off"), as the schema of the type decides
+    them per profile, and its neighbours and size in the type's seq."""
+    on, off = [], []
+    for p in vm.r.profile_names:
+        props = vm.defs[vm.type_ref(key, p, {})["$ref"].removeprefix("#/$defs/")]["properties"]
+        (off if props[fid] is False else on).append(p)
+    seq = vm.index.raw_seq(vm.index.types[key])
+    at = [f["id"] for f in seq].index(fid)
+    return {"on": on, "off": off, "size": seq[at].get("size"),
+            "after": seq[at - 1]["id"] if at else None, "before": seq[at + 1]["id"] if at + 1 < len(seq) else None}
+
+
+def _and(names: list[str], quote: str = "") -> str:
+    q = [f"{quote}{n}{quote}" for n in names]
+    return " and ".join(q) if len(q) < 3 else ", ".join(q[:-1]) + " and " + q[-1]
+
+
+def schemas(vm: ValueModel | None = None) -> dict[str, dict]:
+    vm = vm or ValueModel()
     ops = operation_schemas(vm)
     proto = protocol_schema(vm)
     value_model = _doc(VM, "osdk JSON value model", "One definition per spec/*.ksy type (\"file.type\", with "
@@ -648,21 +680,292 @@ def render(doc: dict) -> str:
     return json.dumps(doc, indent=1, ensure_ascii=False, allow_nan=False) + "\n"
 
 
+# ----------------------------------------------------------------- generated regions of docs/NAMING.md
+
+NAMING = ROOT / "docs" / "NAMING.md"
+_REGION = re.compile(r"(?P<open><!-- (?P<name>[a-z_]+):begin \(tools/gen_schemas\.py writes this part\) -->\n)"
+                     r"(?P<body>.*?)(?P<close><!-- (?P=name):end -->)", re.S)
+
+
+def naming_regions(vm: ValueModel) -> dict[str, str]:
+    """The parts of docs/NAMING.md that restate the spec: the profiles with
+    their ksy enum names and values, the control mode byte's fields, the
+    broadcast item names, which profiles the version ACK's version_id is on,
+    and the other enums."""
+    rows = ["| id (CLI, rules, vectors) | ksy enum name (`profile`) | value |", "|---|---|---|"]
+    rows += [f"| `{p}` | `{vm.ksy_profiles[p]}` | {vm.r.profile(p).value} |" for p in vm.r.profile_names]
+    items = vm.r.broadcast_item_names
+    vid = optional_field(vm, VERSION_ACK, "version_id")
+    version = f"`version_id` ({vid['size']} bytes, hex) is present "
+    version += f"on {_and(vid['on'], '`')} only" if vid["off"] else "on every profile"
+    version += f", between `{vid['after']}` and `{vid['before']}`"
+    if vid["off"]:
+        version += f"; {_and(vid['off'], '`')} {'has' if len(vid['off']) == 1 else 'have'} no such field"
+    version += " (spec/ERRATA.md E30)."
+    fields = vm.r.data["control_mode"]["fields"]
+    mode_lines = []
+    for f in fields:
+        top = f["lsb"] + f["width"] - 1
+        bits = f"bits {top}-{f['lsb']}" if f["width"] > 1 else f"bit {f['lsb']}"
+        undefined = [str(u["value"]) for u in f["undefined"]]
+        mode_lines.append(f"- `{f['name']}` ({bits}): " + ", ".join(f"`{v['name']}`={v['value']}" for v in f["values"])
+                          + (f" ({', '.join(undefined)} undefined)" if undefined else ""))
+    enum_lines = []
+    for name in vm.r.enum_names:
+        if name == "profile" or name in {f["name"] for f in fields}:
+            continue  # in the Profiles table and the control mode byte above
+        values = vm.r.enum(name)
+        wide = max(values) > 0xFF  # a u2 enum reads best in hex
+        enum_lines.append(f"- `{name}`: " + ", ".join(f"{f'0x{v:04X}' if wide else v} `{n}`" for v, n in values.items()))
+    return {
+        "profiles": "\n".join(rows),
+        "control_mode": "\n".join(mode_lines),
+        "broadcast_items": textwrap.fill(", ".join(f"`{i}`" for i in items) + ".", width=79),
+        "version_id": textwrap.fill(version, width=79),
+        "enums": "\n".join(enum_lines),
+    }
+
+
+# ----------------------------------------------------------------- generated regions of conformance/PROTOCOL.md
+
+PROTOCOL = ROOT / "conformance" / "PROTOCOL.md"
+RESERVED = "(reserved)"
+
+
+def _variant_fields(vm: ValueModel, item: rules.BroadcastItem, params: dict) -> list[str]:
+    """The fields of a parametric item's type that its params leave out."""
+    ref = vm.type_ref((rules.ITEMS_KSY_ID, (item.type,)), None, params)["$ref"].removeprefix("#/$defs/")
+    return [fid for fid, schema in vm.defs[ref]["properties"].items() if schema is False]
+
+
+def protocol_regions(vm: ValueModel) -> dict[str, str]:
+    """The parts of conformance/PROTOCOL.md that restate the spec: the profile
+    ids, the version ACK's layout per profile, the flag bit table, the
+    variants of the parametric broadcast items and the control mode parts
+    (_control_mode_regions)."""
+    r = vm.r
+    names = r.profile_names
+    profiles = {p: r.profile(p) for p in names}
+
+    fid = "version_id"
+    vid = optional_field(vm, VERSION_ACK, fid)
+    sizes = {p: vm.index.type_size(VERSION_ACK[0], VERSION_ACK[1][0], {"profile": f"profile::{vm.ksy_profiles[p]}"})
+             for p in names}
+
+    def ack_size(group: list[str]) -> int:
+        if len({sizes[p] for p in group}) != 1:
+            raise SystemExit(f"gen_schemas: version_ack_value has several sizes on {', '.join(group)}: "
+                             "conformance/PROTOCOL.md cannot say them in one phrase")
+        return sizes[group[0]]
+
+    carries = f"`{fid}` ({vid['size']} bytes, hex) between `{vid['after']}` and `{vid['before']}`"
+    if vid["off"]:
+        version = (f"On {_and(vid['on'], '`')} the version ACK carries {carries} ({ack_size(vid['on'])} bytes in all); "
+                   f"on {_and(vid['off'], '`')} it has no `{fid}` ({ack_size(vid['off'])} bytes; "
+                   "ERRATA E30). Decoding either layout under a profile of the other is a length error "
+                   "(`truncated_payload` or `length_mismatch`).")
+    else:
+        version = f"On every profile the version ACK carries {carries} ({ack_size(vid['on'])} bytes in all)."
+
+    # one row per flag bit; consecutive bits on which every profile agrees (the same item, or reserved)
+    # share a row, their items listed once and the other profiles' cells saying "same"
+    width = int(re.fullmatch(r"u(\d+)(?:_[lb]e)?", r.data["frame"]["broadcast"]["flags"]).group(1))
+    cells = [tuple(profiles[p].flag_bits[b] if b < len(profiles[p].flag_bits) else RESERVED for p in names)
+             for b in range(width)]
+
+    def agreed(row: tuple[str, ...]) -> str | None:
+        return None if len(set(row)) > 1 else "reserved" if row[0] == RESERVED else "item"
+
+    groups: list[list[int]] = []
+    for b, row in enumerate(cells):
+        if groups and agreed(row) is not None and agreed(row) == agreed(cells[groups[-1][-1]]):
+            groups[-1].append(b)
+        else:
+            groups.append([b])
+    table = ["| flag bit | " + " | ".join(names) + " |", "|---" * (len(names) + 1) + "|"]
+    for bits in groups:
+        span = str(bits[0]) if len(bits) == 1 else f"{bits[0]}-{bits[-1]}"
+        row = cells[bits[0]]
+        shown = [", ".join(cells[b][0] for b in bits)] + ["same"] * (len(names) - 1) if agreed(row) == "item" \
+            else list(row)
+        table.append(f"| {span} | " + " | ".join(shown) + " |")
+
+    # per profile, the variant of each parametric item it has; profiles with the same variants share a line
+    lines: dict[str, list[str]] = {}
+    for p in names:
+        parts = []
+        for name in profiles[p].flag_bits:
+            item = r.broadcast_item(name)
+            if not item.params:
+                continue
+            left_out = _variant_fields(vm, item, dict(profiles[p].item_params[name]))
+            size = profiles[p].item_sizes[name]
+            without = f" without {_and(left_out, '`')}" if left_out else ""
+            parts.append(f"`{name}`{without} ({size} byte{'s' if size != 1 else ''})")
+        lines.setdefault(", ".join(parts), []).append(p)
+    variants = [f"- {', '.join(f'`{p}`' for p in ps)}: {text}." for text, ps in lines.items()]
+
+    return {
+        "profile_ids": textwrap.fill(f"The profiles are the ids {_and(list(names), '`')} (docs/NAMING.md).",
+                                     width=75),
+        "version_ack": textwrap.fill(version, width=75),
+        "flag_bits": "\n".join(table),
+        "item_variants": "\n".join(textwrap.fill(v, width=75, subsequent_indent="  ") for v in variants),
+        **_control_mode_regions(r),
+    }
+
+
+def _grouped(keys: dict[str, Any]) -> list[tuple[Any, list[str]]]:
+    """(key, the profiles with that key), in the order keys first appear."""
+    out: dict[Any, list[str]] = {}
+    for p, k in keys.items():
+        out.setdefault(k, []).append(p)
+    return list(out.items())
+
+
+def _span(values: list[int]) -> str:
+    return f"{values[0]}-{values[-1]}" if values == list(range(values[0], values[-1] + 1)) and len(values) > 1 \
+        else _and([str(v) for v in values])
+
+
+def _range(r: dict[str, Any]) -> str:
+    if r["min"] is None and r["max"] is None:
+        return "unbounded"
+    lo, hi = ("unbounded" if v is None else str(v) for v in (r["min"], r["max"]))
+    return f"{lo}..{hi} {r['unit']}"
+
+
+def _control_mode_regions(r: rules.Rules) -> dict[str, str]:
+    """The classify_control_mode findings (undefined field values, what bit 0
+    is on each profile, documented and undocumented combinations), how many
+    bytes each profile documents, and the input range table."""
+    names = r.profile_names
+    cm, cmodes = r.data["control_mode"], r.data["control_modes"]
+    fields = {f["name"]: f for f in cm["fields"]}
+
+    # undefined field values, one clause per classification, in the order the fields name them
+    by_class: dict[str, list[str]] = {}
+    for f in cm["fields"]:
+        for cls in dict.fromkeys(u["classification"] for u in f["undefined"]):
+            mine = [str(u["value"]) for u in f["undefined"] if u["classification"] == cls]
+            by_class.setdefault(cls, []).append(f"`{f['name']}` {' or '.join(mine)}")
+    findings = ["- " + "; ".join(f"{', '.join(fs)}: `{cls}`" for cls, fs in by_class.items()) + ";"]
+
+    # bit 0: where it is the yaw frame, a yaw angle needs one of its values (errata E15)
+    yaw_ang = next(v["value"] for v in fields["yaw_logic"]["values"] if v["name"] == "yaw_ang")
+    bit0 = cm["bit0_by_profile"]
+    frames = {p: (bit0[p]["yaw_ang_requires"], bit0[p]["violation"]["classification"],
+                  tuple(dict.fromkeys(re.findall(r"errata (E\d+)", bit0[p]["source"]))))
+              for p in names if bit0[p]["meaning"] == "yaw_frame"}
+    for (requires, cls, errata), ps in _grouped(frames):
+        where = "on every profile" if len(ps) == len(names) else f"on {_and(ps, '`')} only"
+        cite = f" (ERRATA {', '.join(errata)})" if errata else ""
+        other = next(v["value"] for v in bit0[ps[0]]["values"] if v["value"] != requires)
+        findings.append(f"- {where}, bit 0 is the yaw frame{cite}: `yaw_logic` {yaw_ang} (`yaw_ang`) with "
+                        f"bit 0 = {other} is `{cls}`;")
+    if not frames:
+        findings.append("- bit 0 is `stable_mode` on every profile and has no finding of its own;")
+
+    # logic triples: the documented rows of the range table, the rest undocumented
+    per_profile = {p: tuple(tuple(_range(c["ranges"][p][axis]) for axis in ("horizontal", "vertical", "yaw"))
+                            for c in cmodes["combinations"])
+                   for p in names}
+    range_groups = _grouped(per_profile)
+    undocumented = cmodes["undocumented"]
+    which = []
+    for axis, fname in (("horizontal", "horizontal_logic"), ("vertical", "vertical_logic"), ("yaw", "yaw_logic")):
+        used = list(dict.fromkeys(c[axis] for c in undocumented))
+        if len(used) < len(fields[fname]["values"]):  # an axis that takes every value says nothing
+            which.append(" or ".join(f"`{n}`" for n in used))
+    kinds = " with ".join(which) + ", " if which else ""
+    findings.append(f"- when the three logic fields all have names: their combination is `documented` when it "
+                    f"is one of the {len(cmodes['combinations'])} rows of "
+                    f"{'the table' if len(range_groups) == 1 else 'each table'} below, else "
+                    f"({kinds}indices {_span([c['index'] for c in undocumented])}) "
+                    "`undocumented`.")
+
+    counts = {p: sum(r.classify_control_mode(b, p)["classification"] == "documented" for b in range(256))
+              for p in names}
+    groups = sorted(_grouped(counts), key=lambda kv: -kv[0])
+    if len(groups) == 1:
+        documented = f"So {groups[0][0]} bytes are documented on every profile."
+    else:
+        documented = "So " + ", ".join(f"{n}{' bytes are documented' if i == 0 else ''} on {_and(ps, '`')}"
+                                       for i, (n, ps) in enumerate(groups)) + "."
+
+    # input ranges: one table per group of profiles whose ranges agree on every combination
+    masks = {c["mask"] for c in cmodes["combinations"]}
+    if len(masks) != 1:
+        raise SystemExit("gen_schemas: control_modes.combinations have several masks: "
+                         "conformance/PROTOCOL.md cannot show them in one column")
+    mask = masks.pop()
+    bits = [b for b in range(8) if mask >> b & 1]
+    header = (f"| combination | mode bits {bits[-1]}-{bits[0]} (byte & 0x{mask:02X}) | horizontal | vertical | yaw "
+              "| x, y range | z range | yaw range |")
+    tables = []
+    for ranges, ps in range_groups:
+        where = "The ranges are the same on every profile" if len(ps) == len(names) \
+            else f"On {_and(ps, '`')} the ranges are"
+        sources = list(dict.fromkeys(cmodes["profile_ranges"][p] for p in ps))
+        rows = [textwrap.fill(f"{where} (rules.yaml `control_modes.profile_ranges`: "
+                              f"{', '.join(f'`{s}`' for s in sources)}):", width=75),
+                "", header, "|---" * 8 + "|"]
+        rows += [f"| {c['index']} | 0x{c['value']:02X} | `{c['horizontal']}` | `{c['vertical']}` | `{c['yaw']}` | "
+                 + " | ".join(rng) + " |" for c, rng in zip(cmodes["combinations"], ranges)]
+        tables.append("\n".join(rows))
+
+    return {
+        "control_mode_findings": "\n".join(textwrap.fill(f, width=75, subsequent_indent="  ") for f in findings),
+        "documented_bytes": textwrap.fill(documented, width=75),
+        "input_ranges": "\n\n".join(tables),
+    }
+
+
+def fill_regions(text: str, regions: dict[str, str], where: str) -> str:
+    """`text` with the body of each marked region replaced; every region
+    must be marked exactly once."""
+    found = [m.group("name") for m in _REGION.finditer(text)]
+    problems = [f"no region {n!r}" for n in regions if n not in found]
+    problems += [f"region {n!r} is marked {found.count(n)} times" for n in set(found) if found.count(n) > 1]
+    problems += [f"unknown region {n!r}" for n in found if n not in regions]
+    if problems:
+        raise SystemExit(f"gen_schemas: {where}: " + "; ".join(sorted(problems)))
+    return _REGION.sub(lambda m: m.group("open") + regions[m.group("name")] + "\n" + m.group("close"), text)
+
+
+def generated_docs(vm: ValueModel) -> dict[Path, tuple[str, str]]:
+    """Each document with generated parts: (its text now, its text as the spec writes it)."""
+    out = {}
+    for path, regions in ((NAMING, naming_regions(vm)), (PROTOCOL, protocol_regions(vm))):
+        have = path.read_text()
+        out[path] = (have, fill_regions(have, regions, str(path.relative_to(ROOT))))
+    return out
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--check", action="store_true", help="fail if conformance/schemas/ is not what the spec produces")
+    ap.add_argument("--check", action="store_true",
+                    help="fail if conformance/schemas/ or the generated parts of docs/NAMING.md and "
+                         "conformance/PROTOCOL.md are not what the spec produces")
     args = ap.parse_args(argv)
-    want = {name: render(doc) for name, doc in schemas().items()}
+    vm = ValueModel()
+    want = {name: render(doc) for name, doc in schemas(vm).items()}
+    docs = generated_docs(vm)
+    doc_names = " and ".join(str(path.relative_to(ROOT)) for path in docs)
     if args.check:
         have = {p.name: p.read_text() for p in SCHEMA_DIR.glob("*.schema.json")} if SCHEMA_DIR.is_dir() else {}
         drift = [f"differs: {n}" for n in want if have.get(n) != want[n]]
         drift += [f"not generated: {n}" for n in have if n not in want]
+        drift += [f"differs: the generated parts of {path.relative_to(ROOT)}"
+                  for path, (text, wanted) in docs.items() if text != wanted]
         if drift:
-            print("gen_schemas: conformance/schemas/ is out of date (run tools/gen_schemas.py):", file=sys.stderr)
+            print(f"gen_schemas: conformance/schemas/ or the generated parts of {doc_names} are out of date "
+                  "(run tools/gen_schemas.py):", file=sys.stderr)
             for d in drift:
                 print(f"  {d}", file=sys.stderr)
             return 1
-        print(f"gen_schemas: conformance/schemas/ matches spec/ ({len(want)} files)")
+        print(f"gen_schemas: conformance/schemas/ ({len(want)} files) and the generated parts of {doc_names} "
+              "match spec/")
         return 0
     SCHEMA_DIR.mkdir(parents=True, exist_ok=True)
     for old in SCHEMA_DIR.glob("*.schema.json"):
@@ -670,7 +973,10 @@ def main(argv: list[str] | None = None) -> int:
             old.unlink()
     for name, text in want.items():
         (SCHEMA_DIR / name).write_text(text)
-    print(f"gen_schemas: {len(want)} files -> {SCHEMA_DIR.relative_to(ROOT)}")
+    for path, (text, wanted) in docs.items():
+        if wanted != text:
+            path.write_text(wanted)
+    print(f"gen_schemas: {len(want)} files -> {SCHEMA_DIR.relative_to(ROOT)}; generated parts of {doc_names}")
     return 0
 
 

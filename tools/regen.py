@@ -4,6 +4,11 @@ generator (tools/cgen) and the table writer (tools/tables.py).
 
 usage: tools/regen.py [--check] [--target TARGET ...]
 
+First, whatever the targets, the profile-dependent .ksy of spec/ are written
+from spec/rules.yaml (tools/gen_profile_ksy.py: the osdk_broadcast_<profile>.ksy
+files and the marked parts of osdk_payload.ksy), so the compiler always
+sees the profiles the rules define; --check reports them when they are stale.
+
 Targets and where they go, relative to generated/:
   python      python/osdk_kaitai/      Kaitai, package osdk_kaitai
   javascript  javascript/              Kaitai, CommonJS/UMD modules
@@ -92,6 +97,8 @@ def gen_java(out: Path) -> None:
 def gen_go(out: Path) -> None:
     _ksc("go", out, "--go-package", "osdk_kaitai")
     (out / "go.mod").write_text(GO_MOD)
+    # Go cannot find a type by name: the glue gets the package's struct types from this list
+    _load_tool("osdk_tables_tool", TOOLS / "tables.py").write_go_types(out / "osdk_kaitai")
 
 
 def gen_c(out: Path) -> None:
@@ -138,11 +145,18 @@ def differences(a: Path, b: Path) -> list[str]:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--check", action="store_true", help="fail if generated/ is not what the spec produces")
+    ap.add_argument("--check", action="store_true", help="fail if spec/ is not what rules.yaml gives or generated/ is not what spec/ produces")
     ap.add_argument("--target", action="append", choices=sorted(TARGETS), help="limit to these targets")
     args = ap.parse_args(argv)
     targets = args.target or list(TARGETS)
+    profile_ksy = _load_tool("osdk_gen_profile_ksy", TOOLS / "gen_profile_ksy.py")
     drift: list[str] = []
+    if args.check:
+        drift += [f"spec: {d}" for d in profile_ksy.drift()]
+    else:
+        for path in profile_ksy.write():
+            done = "->" if path.exists() else "removed"
+            print(f"regen: spec (rules.yaml profiles) {done} {path.relative_to(ROOT)}")
     for target in targets:
         dest = GENERATED / TARGETS[target][0]
         if args.check:
@@ -157,12 +171,12 @@ def main(argv: list[str] | None = None) -> int:
             generate(target, dest)
             print(f"regen: {target} -> {dest.relative_to(ROOT)}")
     if drift:
-        print("regen: generated/ is out of date with spec/ (run `make regen`):", file=sys.stderr)
+        print("regen: spec/ or generated/ is out of date (run `make regen`):", file=sys.stderr)
         for d in drift:
             print(f"  {d}", file=sys.stderr)
         return 1
     if args.check:
-        print(f"regen: generated/ matches spec/ for {', '.join(targets)}")
+        print(f"regen: spec/ matches rules.yaml, and generated/ matches spec/ for {', '.join(targets)}")
     return 0
 
 

@@ -4,8 +4,10 @@ so that no testee re-implements the rules engine or re-reads YAML.
 
 Written by tools/regen.py to generated/tables/osdk_tables.json (and read by
 the C generator). Everything here is derived, none of it is typed by hand
-(the error classes by field are osdk_conformance.model.ERROR_BY_FIELD).
+(the error classes by field are osdk_conformance.core.model.ERROR_BY_FIELD).
 
+- profiles: the profile ids in value order; profile_values: each id's value
+  in the ksy enum `profile` (what a generated parser takes as its profile);
 - crc: CRC-16/CRC-32 parameters (init as the register value, as the SDK
   code holds it; ERRATA E21);
 - commands: (set, id) -> the command name streams report as `ack_of`;
@@ -16,6 +18,9 @@ the C generator). Everything here is derived, none of it is typed by hand
 - model: per ksy type (key "file" or "file.type.subtype"), its class path
   and its seq fields in wire order with what the value model needs to
   render each (docs/VALUE-MODEL.md); enums by "file.enum".
+
+regen.py also writes, beside the Go parsers, the list of their struct types
+(go_types(): Go cannot find a type by its name at run time).
 """
 from __future__ import annotations
 
@@ -28,9 +33,9 @@ from typing import Any, Iterator
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from osdk_conformance import ksy, rules  # noqa: E402
-from osdk_conformance.commands import COMMANDS  # noqa: E402
-from osdk_conformance.model import ERROR_BY_FIELD, SKIPPED_FIELDS  # noqa: E402
+from osdk_conformance.core import ksy, rules  # noqa: E402
+from osdk_conformance.core.commands import COMMANDS  # noqa: E402
+from osdk_conformance.core.model import ERROR_BY_FIELD, SKIPPED_FIELDS  # noqa: E402
 
 _PRIM = re.compile(r"^(u|s)(1|2|4|8)(le|be)?$")
 _FLOAT = re.compile(r"^f(4|8)(le|be)?$")
@@ -163,6 +168,7 @@ def tables() -> dict[str, Any]:
     return {
         "comment": "Generated from spec/ by tools/regen.py (tools/tables.py). Do not edit.",
         "profiles": list(r.profile_names),
+        "profile_values": {p: r.profile(p).value for p in r.profile_names},
         "crc": crc_tables(r),
         "commands": [{"cmd_set": s, "cmd_id": i, "name": n} for (s, i), n in sorted(COMMANDS.items())],
         "error_by_field": ERROR_BY_FIELD,
@@ -177,6 +183,36 @@ def write(out_dir: Path) -> None:
     out_dir.mkdir(parents=True, exist_ok=True)
     text = json.dumps(tables(), indent=1, sort_keys=False, allow_nan=False) + "\n"
     (out_dir / "osdk_tables.json").write_text(text)
+
+
+GO_TYPES_FILE = "osdk_types.go"
+
+
+def go_types() -> str:
+    """A Go file for the generated package listing its struct types. Go
+    cannot look a type up by name at run time, and the glue needs every
+    struct type to trace a validation error to the type that raised it; the
+    names are the tables' class paths joined by "_", as the Kaitai compiler
+    names nested Go types."""
+    names = sorted("_".join(t["class_path"]) for t in model_tables()["types"].values())
+    lines = [
+        "// Generated from spec/*.ksy by tools/regen.py (tools/tables.py). Do not edit.",
+        "",
+        "package osdk_kaitai",
+        "",
+        'import "reflect"',
+        "",
+        "// Types holds every struct type of this package, one per ksy type of the",
+        "// tables' model (generated/tables/osdk_tables.json).",
+        "var Types = []reflect.Type{",
+        *(f"\treflect.TypeOf({n}{{}})," for n in names),
+        "}",
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def write_go_types(package_dir: Path) -> None:
+    (package_dir / GO_TYPES_FILE).write_text(go_types())
 
 
 if __name__ == "__main__":

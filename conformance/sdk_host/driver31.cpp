@@ -236,12 +236,14 @@ void on_broadcast(CoreAPI *api, Header *header, UserData data) {
 }
 
 struct Options {
-  std::string port, profile, key_env;
+  std::string port, key_env;
   unsigned baud = 230400;
   unsigned app_id = 0;
   long frames = 500;
   int moves = 150;
   std::vector<int> restore;   // frequency codes to restore at the end, one per item
+  Version sdk_version = 0;    // the SDK target version of the profile (rules.yaml covers.sdk_version)
+  size_t items = 0;           // how many items the profile's flag word has
 };
 
 std::vector<int> parse_codes(const char *text) {
@@ -258,7 +260,8 @@ bool parse(int argc, char **argv, Options &o) {
     const char *v = argv[i + 1];
     if (k == "--port") o.port = v;
     else if (k == "--baud") o.baud = static_cast<unsigned>(atol(v));
-    else if (k == "--profile") o.profile = v;
+    else if (k == "--sdk-version") o.sdk_version = static_cast<Version>(strtoul(v, 0, 0));
+    else if (k == "--items") o.items = static_cast<size_t>(atol(v));
     else if (k == "--app-id") o.app_id = static_cast<unsigned>(atol(v));
     else if (k == "--key-env") o.key_env = v;
     else if (k == "--frames") o.frames = atol(v);
@@ -266,7 +269,8 @@ bool parse(int argc, char **argv, Options &o) {
     else if (k == "--restore") o.restore = parse_codes(v);
     else return false;
   }
-  return !o.port.empty() && (o.profile == "m100-fw3.1" || o.profile == "a3-fw3.1") && !o.key_env.empty();
+  // the profile is the caller's business: it passes what the SDK and the broadcast need of it
+  return !o.port.empty() && o.sdk_version != 0 && o.items >= 1 && o.items <= 16 && !o.key_env.empty();
 }
 
 void step(const char *name, bool ok, const std::string &detail, const std::string &extra = "") {
@@ -354,7 +358,7 @@ bool set_frequencies(CoreAPI &api, const std::vector<int> &codes, Pending &p, st
 int main(int argc, char **argv) {
   Options o;
   if (!parse(argc, argv, o)) {
-    fprintf(stderr, "usage: %s --port PATH --profile m100-fw3.1|a3-fw3.1 --key-env VAR [--baud B] "
+    fprintf(stderr, "usage: %s --port PATH --sdk-version N --items N --key-env VAR [--baud B] "
                     "[--app-id N] [--frames N] [--moves N] [--restore C,C,...]\n", argv[0]);
     return 2;
   }
@@ -367,7 +371,7 @@ int main(int argc, char **argv) {
   signal(SIGINT, on_signal);
   signal(SIGTERM, on_signal);
 
-  const size_t items = o.profile == "a3-fw3.1" ? 14 : 12;
+  const size_t items = o.items;
   LoggingSerial serial(o.port, o.baud);
   serial.init();
 #ifndef OSDKC_INIT_SETS_NO_STATUS   // 3.1.8's init() leaves the status unset; the version step shows a dead port
@@ -377,7 +381,7 @@ int main(int argc, char **argv) {
     return 1;
   }
 #endif
-  CoreAPI api(&serial, o.profile == "a3-fw3.1" ? versionA3_31 : versionM100_31, false);
+  CoreAPI api(&serial, o.sdk_version, false);
   Session session;
   session.api = &api;
   api.setBroadcastCallback(on_broadcast, &session);

@@ -1,6 +1,6 @@
 """The bundled "construct" testee: answers every operation of
 conformance/PROTOCOL.md with the reference answers
-(osdk_conformance.reference, built on the Construct spec).
+(osdk_conformance.reference.codec, built on the Construct spec).
 
     osdkc run --impl construct
     python conformance/testees/construct_testee.py   # speaks JSON Lines on stdin/stdout
@@ -11,7 +11,7 @@ One request line in, one response line out, flushed. Input it cannot use
 error `bad_request`; an unexpected exception is answered with error
 `internal_error` (a failed case, never a crash).
 
-With arguments it runs the bench mode (osdk_conformance.testee_bench) over
+With arguments it runs the bench mode (osdk_conformance.harness.testee_bench) over
 decode_stream's own event loop, decode.decode_events, without value models.
 """
 from __future__ import annotations
@@ -22,15 +22,15 @@ from typing import Sequence
 
 def main(argv: Sequence[str] = ()) -> int:
     if argv:
-        from osdk_conformance import testee_bench
-        from osdk_conformance.decode import decode_events
-        from osdk_conformance.reference import PROFILES
+        from osdk_conformance.harness import testee_bench
+        from osdk_conformance.reference.decode import decode_events
+        from osdk_conformance.reference.codec import PROFILES
 
         return testee_bench.main(argv, "construct", PROFILES,
                                  lambda chunks, profile: decode_events(chunks, profile, models=False))
 
-    from osdk_conformance.reference import answer
-    from osdk_conformance.serve import serve
+    from osdk_conformance.reference.codec import answer
+    from osdk_conformance.harness.serve import serve
 
     return serve(lambda req: answer(req["op"], req.get("profile"),
                                     {k: v for k, v in req.items() if k not in ("op", "id", "profile")}))

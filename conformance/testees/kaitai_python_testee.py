@@ -3,15 +3,15 @@
 protocol of conformance/PROTOCOL.md.
 
     osdkc run --impl kaitai-python
-    python conformance/testees/kaitai_python_testee.py --bench FILE --profile P   # osdk_conformance.testee_bench
+    python conformance/testees/kaitai_python_testee.py --bench FILE --profile P   # osdk_conformance.harness.testee_bench
 
 Every layout, field, enum and `valid` check comes from the generated
 parsers. The glue below does only what a .ksy cannot:
 
-- CRC-16/CRC-32 checks: osdk_conformance.crc (parameters from rules.yaml).
+- CRC-16/CRC-32 checks: osdk_conformance.core.crc (parameters from rules.yaml).
 - Finding frames in a byte stream (hunting for 0xAA, the receiver's header
   check, rescanning after a rejection): the testee REUSES
-  osdk_conformance.deframe (the Deframer for decode_stream, and its
+  osdk_conformance.core.deframe (the Deframer for decode_stream, and its
   header_problem for decode_frame). That is frame-layer receiver logic, not
   part of the .ksy, and shared on purpose so that both bundled
   implementations meet the same receiver; no Construct code is involved.
@@ -20,9 +20,9 @@ parsers. The glue below does only what a .ksy cannot:
   CRC-32), as conformance/PROTOCOL.md's reference does.
 - ACK matching in streams (an ACK's value is typed by the command with the
   same session and SEQ seen earlier) and chunking of the input.
-- Control mode classification and input ranges: osdk_conformance.rules
+- Control mode classification and input ranges: osdk_conformance.core.rules
   (rules.yaml), applied to what OsdkControlMode / OsdkMovementControl read.
-- The JSON value model: osdk_conformance.model.from_kaitai.
+- The JSON value model: osdk_conformance.core.model.from_kaitai.
 - Error classes: a Kaitai `valid` failure (ValidationNotEqualError,
   ValidationExprError) names its field by `src_path` ("/seq/N") in the type
   whose `_read` raised it, found from the traceback; the field maps to the
@@ -39,7 +39,7 @@ the quiet bit of a signalling NaN; the value model compares IEEE bits, so
 the parsed object alone cannot say which NaN the wire carried. The testee
 recovers the bits from the input instead: when a response model holds a
 NaN, `restore_nan_bits` walks the parsed object alongside the ksy seq of
-its type (osdk_conformance.ksy) and computes each field's byte offset
+its type (osdk_conformance.core.ksy) and computes each field's byte offset
 within the object's stream. Every type in this spec is fixed-size given
 the fields already read: primitives have their width, bit fields are packed
 and byte-aligned before the next byte-sized field, raw byte fields have
@@ -66,19 +66,19 @@ from typing import Any, Iterable, Iterator, Sequence
 
 from kaitaistruct import EndOfStreamError, KaitaiStream, KaitaiStruct, KaitaiStructError, ValidationFailedError
 
-from osdk_conformance import ksy, model
-from osdk_conformance.commands import command_name
-from osdk_conformance.crc import crc32
-from osdk_conformance.deframe import (HEADER_LEN, Frame, Garbage, Rejected, deframe, frame_length,
+from osdk_conformance.core import ksy, model
+from osdk_conformance.core.commands import command_name
+from osdk_conformance.core.crc import crc32
+from osdk_conformance.core.deframe import (HEADER_LEN, Frame, Garbage, Rejected, deframe, frame_length,
                                       header_problem, split_chunks)
-from osdk_conformance.serve import serve
-from osdk_conformance.rules import classify_control_mode, input_ranges
+from osdk_conformance.core.rules import classify_control_mode, input_ranges, profile_names
+from osdk_conformance.harness.serve import serve
 from osdk_kaitai.osdk_control_mode import OsdkControlMode
 from osdk_kaitai.osdk_frame import OsdkFrame
 from osdk_kaitai.osdk_payload import OsdkPayload
 
 NAME = "osdk-kaitai-python"
-PROFILES = ("m100-fw2.3", "m100-fw3.1", "a3-fw3.1")
+PROFILES = profile_names()
 OPERATIONS = ("decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control")
 
 AXIS_RANGE = {"x": "horizontal", "y": "horizontal", "z": "vertical", "yaw": "yaw"}
@@ -411,7 +411,7 @@ def answer(req: Any) -> dict:
 
 def main(argv: Sequence[str] = ()) -> int:
     if argv:
-        from osdk_conformance import testee_bench
+        from osdk_conformance.harness import testee_bench
 
         return testee_bench.main(argv, "kaitai-python", PROFILES,
                                  lambda chunks, profile: stream_events(chunks, profile, models=False))

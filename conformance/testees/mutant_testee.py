@@ -1,6 +1,6 @@
 """A deliberately broken testee, for `osdkc selftest`: the bundled
-"construct" testee (osdk_conformance.reference) with ONE fault injected for
-the life of the process, chosen by name from osdk_conformance.mutants.
+"construct" testee (osdk_conformance.reference.codec) with ONE fault injected for
+the life of the process, chosen by name from osdk_conformance.harness.mutants.
 
     python conformance/testees/mutant_testee.py MUTANT_NAME   # speaks JSON Lines
     python conformance/testees/mutant_testee.py none          # no fault (baseline)
@@ -16,7 +16,7 @@ from pathlib import Path
 
 
 def main(argv: list[str]) -> int:
-    from osdk_conformance import mutants
+    from osdk_conformance.harness import mutants
 
     if argv == ["--list"]:
         for m in mutants.MUTANTS.values():
@@ -31,7 +31,7 @@ def main(argv: list[str]) -> int:
         return 2
     mutants.apply(name)
 
-    from osdk_conformance import reference
+    from osdk_conformance.reference import codec as reference
 
     original = reference.answer
 

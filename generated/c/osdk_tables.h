@@ -16,7 +16,7 @@ extern "C" {
 #endif
 
 #define OSDK_PROFILE_COUNT 3
-/* Profile ids ("m100-fw2.3", ...), by profile index. */
+/* Profile ids (spec/rules.yaml), in value order: by profile index. */
 extern const char *const osdk_profile_ids[OSDK_PROFILE_COUNT];
 /* The value of the spec's profile enum (osdk_payload::profile) per profile index. */
 extern const uint8_t osdk_profile_enum_values[OSDK_PROFILE_COUNT];

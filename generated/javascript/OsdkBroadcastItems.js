@@ -10,11 +10,11 @@
   }
 })(typeof self !== 'undefined' ? self : this, function (OsdkBroadcastItems_, KaitaiStream) {
 /**
- * Item types shared by the three broadcast profiles (m100-fw2.3, m100-fw3.1,
- * a3-fw3.1). A broadcast payload is a u2 presence-flag word followed by each
- * present item in flag-bit order; which bit carries which item, and which
- * variant of an item (through the params below) a profile uses, is decided
- * in the osdk_broadcast_<profile>.ksy files. All structures are packed,
+ * Item types shared by the broadcast profiles. A broadcast payload is a u2
+ * presence-flag word followed by each present item in flag-bit order; which
+ * bit carries which item, and which variant of an item (through the params
+ * below) a profile uses, is decided by the profile's entry in spec/rules.yaml,
+ * from which the osdk_broadcast_<profile>.ksy files are generated. All structures are packed,
  * little-endian; bit fields are numbered from the least significant bit.
  * This file has no seq of its own: it only provides types and enums.
  * @see osdk-conformance seed shared/seeds/000_b7658b258220b5c1.txt (Flight Data table)

@@ -13,19 +13,18 @@ Modules, one per ksy file or concern:
   combinators      when (ksy if:), Call (parametrised ksy types), ExactSize (size:)
   control          control_mode, movement_control, encode_movement_control
   broadcast_items  the broadcast item types
-  broadcast        the three broadcast profiles
+  broadcast        the broadcast payload of each profile (composed as spec/rules.yaml says)
   payload          command/ACK values by set, id, direction and profile
   frame            the frame, parse_frame, build_frame
   compiled         Construct's compiler where it parses as the interpreter does
                    (parse_frame uses it; compiled.parse for any other construct)
 
-At this level every top-level ksy type is exported under its ksy id; the
-parametrised ones (osdk_payload, osdk_frame) are functions of the ksy params.
+At this level every top-level ksy type is exported under its ksy id (one
+osdk_broadcast_<profile> per profile of spec/rules.yaml); the parametrised
+ones (osdk_payload, osdk_frame) are functions of the ksy params.
 """
-from .broadcast import a3_fw3_1 as osdk_broadcast_a3_fw3_1
+from . import broadcast as _broadcast
 from .broadcast import for_profile as broadcast_for_profile
-from .broadcast import m100_fw2_3 as osdk_broadcast_m100_fw2_3
-from .broadcast import m100_fw3_1 as osdk_broadcast_m100_fw3_1
 from .control import control_mode as osdk_control_mode
 from .control import encode_movement_control
 from .control import movement_control as osdk_movement_control
@@ -33,9 +32,12 @@ from .floats import F32, F64, F32le, F64le, IeeeFloat
 from .frame import build_frame, osdk_frame, parse_frame
 from .payload import osdk_payload
 
+_BROADCASTS = {f"osdk_broadcast_{name}": _broadcast.for_profile(value) for value, name in _broadcast.NAMES.items()}
+globals().update(_BROADCASTS)
+
 __all__ = [
     "osdk_control_mode", "osdk_movement_control",
-    "osdk_broadcast_m100_fw2_3", "osdk_broadcast_m100_fw3_1", "osdk_broadcast_a3_fw3_1", "broadcast_for_profile",
+    *_BROADCASTS, "broadcast_for_profile",
     "osdk_payload", "osdk_frame", "parse_frame", "build_frame", "encode_movement_control",
     "F32", "F64", "F32le", "F64le", "IeeeFloat",
 ]

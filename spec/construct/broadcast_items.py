@@ -4,7 +4,10 @@ Mirrors spec/osdk_broadcast_items.ksy. The names are the ksy type names;
 the three ksy types with params (time_stamp, gimbal, control_info) are
 functions of those params, because the profiles differ exactly there
 (FW 2.3 sends the short forms, FW 3.1 the long ones). Which bit carries
-which item is the business of broadcast.py.
+which item, and with which params, is the business of spec/rules.yaml:
+broadcast.py looks each item's construct up here by its ksy type name and
+passes the params by their ksy ids, so names and parameter names here are
+the ksy's.
 """
 from __future__ import annotations
 

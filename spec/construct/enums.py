@@ -5,13 +5,17 @@ case); the comment says which .ksy file declares it. They are written out
 here rather than read from the .ksy files because this package is the
 second, independent transcription of the spec that the differential tests
 hold against the Kaitai one; tests/test_construct_spec.py checks that the
-two transcriptions name the same values.
+two transcriptions name the same values. The exception is the profiles:
+they are defined once, in spec/rules.yaml, and both the ksy enum `profile`
+and PROFILE / PROFILE_IDS here are made from that definition.
 """
 from __future__ import annotations
 
 from collections.abc import Mapping
 
 from construct import EnumIntegerString
+
+from osdk_conformance.core.rules import default_rules
 
 # osdk_control_mode.ksy
 HORIZONTAL_LOGIC = {"hori_atti_tilt_ang": 0, "hori_vel": 1, "hori_pos": 2}
@@ -36,8 +40,8 @@ CUR_MOV_CONTROL_MODE = {
     "atti_ctrl_stop": 100,
 }
 
-# osdk_payload.ksy
-PROFILE = {"m100_fw2_3": 0, "m100_fw3_1": 1, "a3_fw3_1": 2}
+# osdk_payload.ksy (its enum `profile` is generated from rules.yaml profiles)
+PROFILE = {name: value for value, name in default_rules().enum("profile").items()}
 VERSION_ACK = {"activated": 0x0000, "not_activated": 0xFF01}
 ACTIVATION_RESULT = {
     "success": 0,
@@ -69,7 +73,7 @@ ENCRYPTION = {"plain": 0, "aes256": 1}
 COMMAND_SET = {"activation": 0x00, "control": 0x01, "push": 0x02}
 
 # Profile ids as the CLI, rules.yaml and the vectors spell them (docs/NAMING.md).
-PROFILE_IDS = {"m100-fw2.3": 0, "m100-fw3.1": 1, "a3-fw3.1": 2}
+PROFILE_IDS = {name: default_rules().profile(name).value for name in default_rules().profile_names}
 
 # Every enum above by its ksy file and ksy name, for the consistency test.
 BY_KSY = {

@@ -11,7 +11,7 @@ with whole 16-byte blocks when AES-256, and no ACK in session 0.
 Like the Kaitai description, `osdk_frame(profile)` does not check the CRCs; it
 reads and writes them as plain integers, so a test can build a frame with a
 wrong CRC on purpose. `build_frame` is the encoder for correct frames: it
-computes LEN and both CRCs (osdk_conformance.crc, parameters from
+computes LEN and both CRCs (osdk_conformance.core.crc, parameters from
 spec/rules.yaml).
 """
 from __future__ import annotations
@@ -24,7 +24,7 @@ from construct import (
     this,
 )
 
-from osdk_conformance.crc import crc16, crc32
+from osdk_conformance.core.crc import crc16, crc32
 
 from . import compiled
 from .bitfields import lsb_first, record

@@ -13,6 +13,8 @@ import functools
 
 from construct import Array, Bytes, Enum, GreedyBytes, Int8ul, Int16ul, Int32ul, Pass, Struct, Terminated
 
+from osdk_conformance.core.rules import default_rules
+
 from . import broadcast as broadcast_profiles
 from .combinators import when
 from .control import movement_control
@@ -33,11 +35,19 @@ version_query = Struct("arbitrary" / Int8ul)
 VERSION_ID_SIZE = 11
 
 
+# Values of the profiles whose version ACK has no version ID (rules.yaml
+# profiles.<id>.version_ack.version_id false), the exceptions the ksy's
+# `has_version_id` names too.
+_WITHOUT_VERSION_ID = frozenset(
+    p.value for p in map(default_rules().profile, default_rules().profile_names) if not p.has_version_id)
+
+
 def has_version_id(profile) -> bool:
     """Whether the profile's version ACK carries the 11-byte version ID
     between the CRC and the name: FW 3.1 firmware does, M100 FW 2.3 does not
-    (ERRATA E30); as in the ksy, every profile but m100_fw2_3 has it."""
-    return profile_value(profile) != profile_value("m100-fw2.3")
+    (ERRATA E30). rules.yaml says it for each profile; as in the ksy, a
+    value outside the enum has it."""
+    return profile_value(profile) not in _WITHOUT_VERSION_ID
 
 
 @functools.cache

@@ -11,8 +11,8 @@ import subprocess
 import sys
 import time
 
-from osdk_conformance import model
-from osdk_conformance.reference import request_answer
+from osdk_conformance.core import model
+from osdk_conformance.reference.codec import request_answer
 
 answered, limit, marker = 0, int(sys.argv[1]), sys.argv[2]
 for line in sys.stdin:

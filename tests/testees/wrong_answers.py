@@ -3,8 +3,8 @@ which it answers with an error class no vector expects."""
 import json
 import sys
 
-from osdk_conformance import model
-from osdk_conformance.reference import answer
+from osdk_conformance.core import model
+from osdk_conformance.reference.codec import answer
 
 WRONG = set(sys.argv[1:])
 

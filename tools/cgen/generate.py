@@ -414,7 +414,9 @@ class Generator:
                 else:
                     raise GenError(f"{t.ksy_name}.{f.id}: unsupported valid form {k!r}")
             return " && ".join(parts)
-        if isinstance(v, bool) or not isinstance(v, (int, str)):
+        if isinstance(v, bool):  # a b1 field, which Kaitai reads as a boolean
+            v = "true" if v else "false"
+        elif not isinstance(v, (int, str)):
             raise GenError(f"{t.ksy_name}.{f.id}: unsupported valid {v!r}")
         return self.tr(t, f"_ == ({v})", "bool", underscore)
 
@@ -1031,14 +1033,15 @@ class Generator:
         cmds = self.tables["commands"]
         out["command_count"] = str(len(cmds))
         out["commands"] = "\n".join(f"    {{{c['cmd_set']}, {c['cmd_id']}, {c_string(c['name'])}}}," for c in cmds)
-        # profile id -> value of the spec's profile enum (m100-fw2.3 -> m100_fw2_3)
+        # profile id -> the value the decoder takes (the tables' profile_values), which must be a
+        # member of the spec's profile enum
+        members = {v for v, _ in (prof_enum.values if prof_enum else [])}
         values = []
         for p in profiles:
-            name = p.replace("-", "_").replace(".", "_")
-            match = [v for v, n in (prof_enum.values if prof_enum else []) if n == name]
-            if len(match) != 1:
-                raise GenError(f"profile {p}: no member {name} in enum osdk_payload::profile")
-            values.append(str(match[0]))
+            value = self.tables["profile_values"].get(p)
+            if value not in members:
+                raise GenError(f"profile {p}: value {value} is not a member of enum osdk_payload::profile")
+            values.append(str(value))
         out["profile_enum_values"] = ", ".join(values)
         return out
 
@@ -1103,7 +1106,7 @@ def main(argv: Optional[list[str]] = None) -> int:
         tables_tool = load_tables_module()
         tables = tables_tool.tables()
         rules_doc = yaml.safe_load((ROOT / "spec" / "rules.yaml").read_text(encoding="utf-8"))
-        from osdk_conformance.model import SKIPPED_FIELDS
+        from osdk_conformance.core.model import SKIPPED_FIELDS
         files = Generator(spec, tables, rules_doc, frozenset(SKIPPED_FIELDS)).render()
     except (SpecError, GenError, ExprError) as e:
         print(f"cgen: {e}", file=sys.stderr)

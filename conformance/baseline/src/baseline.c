@@ -13,9 +13,10 @@
  * receiver can do, which is what the generated, fully checked decoder is
  * measured against.
  *
- * Item sizes come from build/items.h (generated from spec/rules.yaml by
- * gen_items.py); the CRCs are generated/c/osdk_crc.c, the same code the
- * generated decoder uses.
+ * The struct of the latest item values and each profile's item slots and
+ * sizes come from build/items.h (generated from the spec by gen_items.py);
+ * the CRCs are generated/c/osdk_crc.c, the same code the generated decoder
+ * uses.
  *
  *   osdk-baseline --bench FILE|- --profile P     (conformance/PROTOCOL.md, "Bench mode")
  */
@@ -37,63 +38,10 @@
 #define READ_SIZE (64u * 1024u)
 #define USAGE "usage: --bench FILE|- --profile P"
 
-/* ---- where the items go (the SDK keeps one such struct of the latest values) ---- */
-
-#pragma pack(push, 1)
-typedef struct { uint32_t time, nano_time; uint8_t sync_flag; } time_stamp_t;
-typedef struct { float q0, q1, q2, q3; } quaternion_t;
-typedef struct { float x, y, z; } vector3f_t;
-typedef struct { float x, y, z; uint8_t flags; } velocity_t;
-typedef struct { double latitude, longitude; float altitude, height; uint8_t gps_health; } position_t;
-typedef struct {
-    uint32_t date, time;
-    int32_t longitude, latitude, height_msl;
-    float vel_n, vel_e, vel_d;
-} gps_detail_t;
-typedef struct {
-    uint32_t date, time;
-    double longitude, latitude;
-    float height_msl, vel_n, vel_e, vel_d;
-    int16_t yaw;
-    uint8_t position_flag, yaw_flag;
-} rtk_detail_t;
-typedef struct { int16_t x, y, z; } magnetometer_t;
-typedef struct { int16_t roll, pitch, yaw, throttle, mode, gear; } rc_t;
-typedef struct { float roll, pitch, yaw; uint8_t limit; } gimbal_t;
-typedef struct { uint8_t mode_or_device, device; } control_info_t;
-
-typedef struct {
-    time_stamp_t time_stamp;
-    quaternion_t quaternion;
-    vector3f_t acceleration;
-    velocity_t velocity;
-    vector3f_t angular_rate;
-    position_t position;
-    gps_detail_t gps_detail;
-    rtk_detail_t rtk_detail;
-    magnetometer_t magnetometer;
-    rc_t rc;
-    gimbal_t gimbal;
-    uint8_t flight_status;
-    uint8_t battery;
-    control_info_t control_info;
-} broadcast_t;
-#pragma pack(pop)
-
 /* Not static: the copies are the work being measured and must not be optimised away. */
 broadcast_t baseline_broadcast;
 uint8_t baseline_command[MAX_FRAME];
 uint8_t baseline_ack[MAX_FRAME];
-
-#define SLOT(name) {#name, offsetof(broadcast_t, name), sizeof baseline_broadcast.name}
-static const struct {
-    const char *name;
-    size_t offset, size;
-} SLOTS[] = {
-    SLOT(time_stamp), SLOT(quaternion), SLOT(acceleration), SLOT(velocity), SLOT(angular_rate),
-    SLOT(position), SLOT(gps_detail), SLOT(rtk_detail), SLOT(magnetometer), SLOT(rc), SLOT(gimbal),
-    SLOT(flight_status), SLOT(battery), SLOT(control_info),
-};
 
 /* ---- the receiver ------------------------------------------------------------------ */
 
@@ -224,21 +172,14 @@ static int fail(const char *fmt, const char *a, const char *b)
     return 2;
 }
 
-static int setup(rx_t *rx, int profile)
+static void setup(rx_t *rx, int profile)
 {
-    unsigned i, k;
+    unsigned i;
     rx->items = ITEM_COUNT[profile];
     for (i = 0; i < rx->items; i++) {
-        for (k = 0; k < sizeof SLOTS / sizeof SLOTS[0]; k++) {
-            if (strcmp(SLOTS[k].name, ITEM_NAMES[profile][i]) == 0) break;
-        }
-        if (k == sizeof SLOTS / sizeof SLOTS[0] || ITEM_SIZES[profile][i] > SLOTS[k].size)
-            return fail("item %s of %s does not fit the baseline's struct", ITEM_NAMES[profile][i],
-                        PROFILE_IDS[profile]);
-        rx->dest[i] = (uint8_t *)&baseline_broadcast + SLOTS[k].offset;
+        rx->dest[i] = (uint8_t *)&baseline_broadcast + ITEM_OFFSETS[profile][i];
         rx->size[i] = ITEM_SIZES[profile][i];
     }
-    return 0;
 }
 
 static double now(void)
@@ -279,7 +220,7 @@ int main(int argc, char **argv)
         }
         return fail("unknown profile '%s' (known: %s)", profile_id, known);
     }
-    if (setup(&rx, profile)) return 2;
+    setup(&rx, profile);
     in = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     if (!in) return fail("cannot read %s: %s", path, strerror(errno));
     start = now();

@@ -54,7 +54,7 @@ func parseBenchArgs(args []string, profiles []string) (path, profile string, err
 func (t *Testee) bench(path, profile string) (Obj, error) {
 	p, ok := t.profile(profile)
 	if !ok {
-		return nil, fmt.Errorf("profile %s has no value in the enum osdk_payload.profile", profile)
+		return nil, fmt.Errorf("profile %s has no value in the tables (profile_values)", profile)
 	}
 	in := os.Stdin
 	if path != "-" {

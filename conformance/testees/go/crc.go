@@ -3,7 +3,7 @@ package main
 import "fmt"
 
 // CRC is a table-driven CRC for one parameter block of the tables. As in
-// the SDK (and osdk_conformance/crc.py), Init is the register's start value
+// the SDK (and osdk_conformance/core/crc.py), Init is the register's start value
 // in the register's own shift direction: it is never reflected.
 type CRC struct {
 	p     CRCParams

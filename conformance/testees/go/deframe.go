@@ -6,7 +6,7 @@ import (
 	"fmt"
 )
 
-// The receiver of osdk_conformance/deframe.py: hunt for 0xAA, check the
+// The receiver of osdk_conformance/core/deframe.py: hunt for 0xAA, check the
 // 12-byte header (CRC-16 first, then VER, RES0, RES1, LEN) and on any
 // failure drop that ONE byte and hunt again; with a good header wait for
 // LEN bytes and check the CRC-32, rescanning from the byte after the start

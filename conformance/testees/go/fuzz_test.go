@@ -18,8 +18,9 @@ import (
 // arbitrary byte streams, as decode_stream runs them.
 //
 // The input is read as every stream target reads it (tools/fuzz_corpus.py
-// stream_input): the first byte modulo 3 picks the profile, its top six
-// bits plus one the read size; the rest is the stream. A finding is a panic
+// stream_input): the first byte modulo the number of profiles picks the
+// profile (in the tables' order), its top six bits plus one the read size;
+// the rest is the stream. A finding is a panic
 // (streamDecoder.frame is called directly, past the recover that keeps the
 // testee alive), an error that is not a Rejection, the class undecodable,
 // events out of stream order or outside the input, or a frame event that is
@@ -176,7 +177,7 @@ func checkStream(te *Testee, data []byte) string {
 	stream := data[1:]
 	p, ok := te.profile(profile)
 	if !ok {
-		return "profile " + profile + " has no value in osdk_payload.profile"
+		return "profile " + profile + " has no value in the tables (profile_values)"
 	}
 	var sizes []int
 	for n := len(stream) / size; n > 0; n-- {

@@ -6,6 +6,8 @@ import (
 	"reflect"
 	"sort"
 	"testing"
+
+	k "osdk-conformance.local/generated/go/osdk_kaitai"
 )
 
 func testTables(t *testing.T) *Tables {
@@ -133,12 +135,13 @@ func TestSplitChunks(t *testing.T) {
 	}
 }
 
-// Every ksy type of the tables has its generated Go struct in
-// generatedTypes, with a Go field for every field the model shows.
+// Every ksy type of the tables has its generated Go struct in k.Types (that
+// list compiling shows the Kaitai compiler gave each type the name the
+// tables' class path says), with a Go field for every field the model shows.
 func TestRegistryCoversTables(t *testing.T) {
 	tb := testTables(t)
 	var fromGo, fromTables []string
-	for _, gt := range generatedTypes {
+	for _, gt := range k.Types {
 		fromGo = append(fromGo, gt.Name())
 		key, ok := tb.typeByClass[gt.Name()]
 		if !ok {
@@ -156,7 +159,7 @@ func TestRegistryCoversTables(t *testing.T) {
 	sort.Strings(fromGo)
 	sort.Strings(fromTables)
 	if !reflect.DeepEqual(fromGo, fromTables) {
-		t.Errorf("generatedTypes %v\n   tables types %v", fromGo, fromTables)
+		t.Errorf("k.Types %v\n   tables types %v", fromGo, fromTables)
 	}
 }
 

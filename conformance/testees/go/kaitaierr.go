@@ -16,45 +16,6 @@ import (
 	k "osdk-conformance.local/generated/go/osdk_kaitai"
 )
 
-// Every struct type of the generated package, so that a validation error
-// can be traced to the type that raised it (TestRegistryCoversTables keeps
-// this list and the tables in step).
-var generatedTypes = []reflect.Type{
-	reflect.TypeOf(k.OsdkBroadcastA3Fw31{}),
-	reflect.TypeOf(k.OsdkBroadcastItems{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_ControlInfo{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Gimbal{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_GimbalLimit{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_GpsDetail{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Magnetometer{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Position{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Quaternion{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Rc{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_RtkDetail{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_TimeStamp{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Vector3f{}),
-	reflect.TypeOf(k.OsdkBroadcastItems_Velocity{}),
-	reflect.TypeOf(k.OsdkBroadcastM100Fw23{}),
-	reflect.TypeOf(k.OsdkBroadcastM100Fw31{}),
-	reflect.TypeOf(k.OsdkControlMode{}),
-	reflect.TypeOf(k.OsdkFrame{}),
-	reflect.TypeOf(k.OsdkFrame_FrameData{}),
-	reflect.TypeOf(k.OsdkMovementControl{}),
-	reflect.TypeOf(k.OsdkPayload{}),
-	reflect.TypeOf(k.OsdkPayload_ActivationAckValue{}),
-	reflect.TypeOf(k.OsdkPayload_ActivationRequest{}),
-	reflect.TypeOf(k.OsdkPayload_Broadcast{}),
-	reflect.TypeOf(k.OsdkPayload_ControlAckValue{}),
-	reflect.TypeOf(k.OsdkPayload_ControlRequest{}),
-	reflect.TypeOf(k.OsdkPayload_FrequencyAckValue{}),
-	reflect.TypeOf(k.OsdkPayload_FrequencyRequest{}),
-	reflect.TypeOf(k.OsdkPayload_LostControl{}),
-	reflect.TypeOf(k.OsdkPayload_LostControlAckValue{}),
-	reflect.TypeOf(k.OsdkPayload_UnknownValue{}),
-	reflect.TypeOf(k.OsdkPayload_VersionAckValue{}),
-	reflect.TypeOf(k.OsdkPayload_VersionQuery{}),
-}
-
 // Rejection is an input rejected with an error class of docs/VALUE-MODEL.md.
 type Rejection struct {
 	Class, Detail string
@@ -103,7 +64,7 @@ func (tb *Tables) raisingFields(vf kaitai.ValidationFailedError) ([]string, stri
 	actual := reflect.TypeOf(vf.Actual())
 	var fields []string
 	classes := map[string]bool{}
-	for _, t := range generatedTypes {
+	for _, t := range k.Types {
 		key, ok := tb.typeByClass[t.Name()]
 		if !ok || n >= len(tb.Model.Types[key].Seq) {
 			continue

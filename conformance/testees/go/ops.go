@@ -133,8 +133,9 @@ func (r request) hexBytes() ([]byte, error) {
 	return hex.DecodeString(s)
 }
 
+// profile is the value the generated parsers take for a profile id.
 func (t *Testee) profile(name string) (k.OsdkPayload_Profile, bool) {
-	n, ok := t.tb.enumValue("osdk_payload.profile", strings.NewReplacer("-", "_", ".", "_").Replace(name))
+	n, ok := t.tb.ProfileValues[name]
 	return k.OsdkPayload_Profile(n), ok
 }
 
@@ -527,7 +528,7 @@ func (t *Testee) answer(r request) (Obj, error) {
 	}
 	p, ok := t.profile(profile)
 	if !ok {
-		return nil, fmt.Errorf("profile %s has no value in the enum osdk_payload.profile", profile)
+		return nil, fmt.Errorf("profile %s has no value in the tables (profile_values)", profile)
 	}
 	result, err := fn(t, r, p, profile)
 	if err != nil {

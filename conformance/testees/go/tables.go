@@ -12,14 +12,15 @@ import (
 // Tables is the part of generated/tables/osdk_tables.json this testee uses:
 // everything it needs besides the generated parser.
 type Tables struct {
-	Profiles     []string                     `json:"profiles"`
-	CRC          map[string]CRCParams         `json:"crc"`
-	Commands     []Command                    `json:"commands"`
-	ErrorByField map[string]string            `json:"error_by_field"`
-	ControlModes map[string]ControlModeTable  `json:"control_modes"`
-	Model        ModelTables                  `json:"model"`
-	IfExpr       map[string]map[string]string `json:"if_expressions"`
-	Checked      map[string][]string          `json:"checked_fields"`
+	Profiles      []string                     `json:"profiles"`
+	ProfileValues map[string]int64             `json:"profile_values"`
+	CRC           map[string]CRCParams         `json:"crc"`
+	Commands      []Command                    `json:"commands"`
+	ErrorByField  map[string]string            `json:"error_by_field"`
+	ControlModes  map[string]ControlModeTable  `json:"control_modes"`
+	Model         ModelTables                  `json:"model"`
+	IfExpr        map[string]map[string]string `json:"if_expressions"`
+	Checked       map[string][]string          `json:"checked_fields"`
 
 	// Built after loading.
 	commandNames map[[2]int]string
@@ -112,7 +113,7 @@ func loadTables(path string) (*Tables, error) {
 	if err := json.Unmarshal(text, t); err != nil {
 		return nil, fmt.Errorf("%s: %w", path, err)
 	}
-	if len(t.Model.Types) == 0 || len(t.CRC) == 0 || len(t.ControlModes) == 0 {
+	if len(t.Model.Types) == 0 || len(t.CRC) == 0 || len(t.ControlModes) == 0 || len(t.ProfileValues) != len(t.Profiles) {
 		return nil, fmt.Errorf("%s: incomplete tables", path)
 	}
 	t.commandNames = map[[2]int]string{}
@@ -146,15 +147,4 @@ func (t *Tables) enumName(enum string, value int64) any {
 		return n
 	}
 	return nil
-}
-
-// enumValue is the number the spec gives an enum name.
-func (t *Tables) enumValue(enum, name string) (int64, bool) {
-	for k, v := range t.Model.Enums[enum] {
-		if v == name {
-			n, err := strconv.ParseInt(k, 10, 64)
-			return n, err == nil
-		}
-	}
-	return 0, false
 }

@@ -1,7 +1,7 @@
 'use strict';
 // Frame-layer receiver logic that a .ksy cannot express: the two CRCs and
 // the SDK-like hunt for frames in a byte stream. A port of
-// osdk_conformance/deframe.py (same check order, same rescans, same events),
+// osdk_conformance/core/deframe.py (same check order, same rescans, same events),
 // so that every bundled testee meets the same receiver.
 
 const { tables } = require('./tables');

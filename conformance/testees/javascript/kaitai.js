@@ -40,8 +40,13 @@ class Rejection extends Error {
   }
 }
 
+// The value the generated parsers take for a profile id.
 function profileValue(name) {
-  return OsdkPayload.Profile[name.replace(/[-.]/g, '_').toUpperCase()];
+  const value = tables.profile_values[name];
+  if (OsdkPayload.Profile[value] === undefined) {
+    throw new Error(`profile ${name} has no value of the enum osdk_payload.profile`);
+  }
+  return value;
 }
 
 // ---- Kaitai exceptions -> error classes ------------------------------------------

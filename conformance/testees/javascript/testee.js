@@ -37,7 +37,7 @@ if (!nodePath.includes(RUNTIME)) {
 
 // One JSON line in, one JSON line out (conformance/PROTOCOL.md). Input the
 // testee cannot use is answered bad_request, a bug of its own internal_error:
-// a failed case, never a dead testee (osdk_conformance/serve.py).
+// a failed case, never a dead testee (osdk_conformance/harness/serve.py).
 function serve() {
   // The call-site walk that names a failed `valid` check needs the frames up
   // to the generated _read; the default of 10 is enough today, this is slack.

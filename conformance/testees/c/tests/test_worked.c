@@ -1,4 +1,4 @@
-/* The two worked frames of PROTOCOL-FACTS section 1 (osdk_conformance/worked_examples.py). */
+/* The two worked frames of PROTOCOL-FACTS section 1 (osdk_conformance/reference/worked_examples.py). */
 #include <string.h>
 
 #include "check.h"

@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * Finds frames in a byte stream the way the SDK's receiver does
- * (osdk_conformance/deframe.py is the reference this follows step by step):
+ * (osdk_conformance/core/deframe.py is the reference this follows step by step):
  * hunt for 0xAA; check the 12-byte header (CRC-16 first, then VER, RES0,
  * RES1, LEN) and on any failure drop that ONE byte and hunt again; with a
  * good header wait for LEN bytes and check the CRC-32, dropping one byte on

@@ -12,7 +12,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 /**
- * The request loop of conformance/PROTOCOL.md (osdk_conformance/serve.py):
+ * The request loop of conformance/PROTOCOL.md (osdk_conformance/harness/serve.py):
  * one JSON line in, one JSON line out, flushed. Input the testee cannot use
  * is answered `bad_request`, a bug of its own `internal_error`: a failed
  * case, never a dead testee.

@@ -4,7 +4,6 @@ import java.math.BigInteger;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.regex.Pattern;
 import osdk_kaitai.OsdkControlMode;
@@ -79,7 +78,12 @@ final class Operations {
     // ---- the generated parsers -------------------------------------------------------------
 
     static OsdkPayload.Profile profile(String name) {
-        return OsdkPayload.Profile.valueOf(name.replace('-', '_').replace('.', '_').toUpperCase(Locale.ROOT));
+        Long value = T.profileValues.get(name);
+        OsdkPayload.Profile p = value == null ? null : OsdkPayload.Profile.byId(value);
+        if (p == null) {
+            throw new IllegalStateException("profile " + name + " has no value of the enum osdk_payload.profile");
+        }
+        return p;
     }
 
     static OsdkFrame frame(byte[] raw, String profile) throws Rejection {

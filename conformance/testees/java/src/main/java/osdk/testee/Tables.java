@@ -100,6 +100,8 @@ final class Tables {
     }
 
     final List<String> profiles;
+    /** Profile id -> its value in the ksy enum `profile`, what the generated parsers take. */
+    final Map<String, Long> profileValues = new HashMap<>();
     final CrcParams crc16;
     final CrcParams crc32;
     final Map<String, String> errorByField;
@@ -112,6 +114,9 @@ final class Tables {
     @SuppressWarnings("unchecked")
     private Tables(Map<String, Object> root) {
         profiles = Collections.unmodifiableList((List<String>) (List<?>) root.get("profiles"));
+        for (Map.Entry<String, Object> e : ((Map<String, Object>) root.get("profile_values")).entrySet()) {
+            profileValues.put(e.getKey(), ((Number) e.getValue()).longValue());
+        }
         Map<String, Object> crc = (Map<String, Object>) root.get("crc");
         crc16 = new CrcParams((Map<String, Object>) crc.get("crc16"));
         crc32 = new CrcParams((Map<String, Object>) crc.get("crc32"));

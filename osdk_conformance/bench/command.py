@@ -1,0 +1,199 @@
+"""`osdkc bench`: how fast the implementations and the kit's own commands are.
+
+Sections (`--only`, default all, in this order):
+
+- decode: every bundled implementation and the SDK-style C baseline
+  (conformance/baseline/) decode each corpus (corpus.py) in their bench
+  mode; frames/s, MB/s, peak RSS and the ratio to the baseline of the same
+  run; the counts each reports must be the corpus's (bench_decode).
+- run: wall and CPU time of `osdkc run --impl all`.
+- fuzz: executions per second of `osdkc fuzz --impl all` (fixed examples and seed).
+- acceptance: CPU use of the acceptance receiver at 100 Hz (`osdkc soak --json`).
+- reliability (only when named in --only: it takes about an hour):
+  healthy active runs of `osdkc device` that must all pass, and seeded runs
+  of every simulator fault that must all be detected (reliability.py).
+
+Nothing here asserts a speed: the numbers are printed, written as JSON
+(--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
+a verdict on each target of the issue. Exit status: 0 when every section ran
+and every check held (counts, conformance, no disagreement, no frame lost),
+1 otherwise, 2 for bad arguments.
+"""
+from __future__ import annotations
+
+import argparse
+import datetime
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+from osdk_conformance.bench import corpus as bench_corpus, decode as bench_decode, reliability as bench_reliability, report as bench_report, sections as bench_sections
+from osdk_conformance.bench.corpus import CORPORA
+from osdk_conformance.bench.decode import impl_names
+from osdk_conformance.bench.reliability import FAULT_CASES
+from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.options import non_negative_int, positive_float, positive_int, probability
+
+SECTIONS = ("decode", "run", "fuzz", "acceptance", "reliability")
+DEFAULT_SECTIONS = SECTIONS[:4]
+QUICK_CORPUS_SECONDS = 60.0
+DEFAULTS = {  # (full, --quick)
+    "fuzz_examples": (2000, 200),
+    "soak_seconds": (60.0, 30.0),
+}
+FUZZ_SEED = 1
+REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
+RELIABILITY_RUNS, FAULT_RUNS, LOAD_SHARE = 200, 20, 0.25
+
+
+def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    ap.add_argument("--only", metavar="SECTIONS",
+                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability)")
+    ap.add_argument("--quick", action="store_true",
+                    help=f"a fast check: corpora of {QUICK_CORPUS_SECONDS:g} s, "
+                         f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak")
+    ap.add_argument("--corpora", metavar="NAMES",
+                    help=f"comma-separated corpora (default all: {', '.join(CORPORA)})")
+    ap.add_argument("--corpus-seconds", type=positive_float, metavar="S", help="make every corpus S seconds of traffic long")
+    ap.add_argument("--input", metavar="FILE",
+                    help="decode this capture (raw bytes) instead of the corpora; needs --profile")
+    ap.add_argument("--profile", choices=profiles, help="the wire profile of --input")
+    ap.add_argument("--impl", metavar="NAMES",
+                    help=f"comma-separated implementations (default all: {', '.join(impl_names())})")
+    ap.add_argument("--repeats", type=positive_int, default=REPEATS, metavar="N",
+                    help=f"runs per implementation and corpus; the best counts (default {REPEATS})")
+    ap.add_argument("--budget", type=positive_float, default=BUDGET, metavar="S",
+                    help="no further runs of an implementation on a corpus once its runs took S seconds "
+                         f"(default {BUDGET:g})")
+    ap.add_argument("--timeout", type=positive_float, default=TIMEOUT, metavar="S",
+                    help=f"seconds one run (of any section) may take (default {TIMEOUT:g})")
+    ap.add_argument("--fuzz-examples", type=positive_int, metavar="N",
+                    help="examples of the fuzz section (default %d, quick %d)" % DEFAULTS["fuzz_examples"])
+    ap.add_argument("--soak-seconds", type=positive_float, metavar="S",
+                    help="seconds of the acceptance section (default %g, quick %g)" % DEFAULTS["soak_seconds"])
+    ap.add_argument("--runs", type=non_negative_int, default=RELIABILITY_RUNS, metavar="N",
+                    help=f"reliability: healthy active runs (default {RELIABILITY_RUNS})")
+    ap.add_argument("--fault-runs", type=non_negative_int, default=FAULT_RUNS, metavar="N",
+                    help=f"reliability: seeded runs of each simulator fault (default {FAULT_RUNS})")
+    ap.add_argument("--load-share", type=probability, default=LOAD_SHARE, metavar="FRAC",
+                    help=f"reliability: share of the healthy runs beside a busy loop on every core "
+                         f"(default {LOAD_SHARE:g})")
+    ap.add_argument("--fault-kinds", metavar="KINDS",
+                    help="reliability: comma-separated simulator faults to run (default all)")
+    ap.add_argument("--parallel", type=positive_int, default=1, metavar="N",
+                    help="reliability: runs at a time (default 1)")
+    ap.add_argument("--json", metavar="FILE", help="write every number as JSON")
+    ap.add_argument("--markdown", metavar="FILE",
+                    help="write the tables, command and machine as Markdown; in a file with a bench block "
+                         "(docs/PERFORMANCE.md) only that block is replaced")
+
+
+def _names(text: str | None, known, what: str) -> list[str]:
+    if text is None:
+        return list(known)
+    names = [n.strip() for n in text.split(",") if n.strip()]
+    unknown = [n for n in names if n not in known]
+    if unknown or not names:
+        given = ", ".join(map(repr, unknown)) or "(none given)"
+        raise UsageError(f"unknown {what} {given} (known: {', '.join(known)})")
+    return list(dict.fromkeys(names))
+
+
+def _writable(path: str | None, option: str) -> Path | None:
+    if path is None:
+        return None
+    p = Path(path)
+    if not p.resolve().parent.is_dir():
+        raise UsageError(f"{option} {path}: directory {p.resolve().parent} does not exist")
+    if p.is_dir():
+        raise UsageError(f"{option} {path} is a directory")
+    return p
+
+
+def command_line(args: argparse.Namespace) -> str:
+    """The options of this run as a command someone can repeat."""
+    parts = ["osdkc", "bench"]
+    for opt in ("only", "corpora", "corpus_seconds", "input", "profile", "impl", "fuzz_examples", "soak_seconds",
+                "fault_kinds"):
+        v = getattr(args, opt)
+        if v is not None:
+            parts += [f"--{opt.replace('_', '-')}", f"{v:g}" if isinstance(v, float) else str(v)]
+    if args.quick:
+        parts.append("--quick")
+    for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),
+                         ("fault_runs", FAULT_RUNS), ("load_share", LOAD_SHARE), ("parallel", 1)):
+        if getattr(args, opt) != default:
+            parts += [f"--{opt.replace('_', '-')}", f"{getattr(args, opt):g}"]
+    return " ".join(parts)
+
+
+def run_bench(args: argparse.Namespace) -> int:
+    sections = _names(args.only, SECTIONS, "section") if args.only else list(DEFAULT_SECTIONS)
+    kinds = _names(args.fault_kinds, tuple(FAULT_CASES), "fault kind")
+    impls = _names(args.impl, bench_decode.impl_names(), "implementation")
+    if (args.input is None) != (args.profile is None):
+        raise UsageError("--input and --profile go together")
+    if args.input is not None and (args.corpora or args.corpus_seconds):
+        raise UsageError("--input replaces the corpora: no --corpora or --corpus-seconds with it")
+    json_path, md_path = _writable(args.json, "--json"), _writable(args.markdown, "--markdown")
+    pick = 1 if args.quick else 0
+    fuzz_examples = args.fuzz_examples or DEFAULTS["fuzz_examples"][pick]
+    soak_seconds = args.soak_seconds or DEFAULTS["soak_seconds"][pick]
+
+    corpora = []
+    if "decode" in sections:
+        if args.input is not None:
+            corpora = [bench_corpus.user_input(args.input, args.profile)]
+        else:
+            seconds = args.corpus_seconds or (QUICK_CORPUS_SECONDS if args.quick else None)
+            for name in _names(args.corpora, bench_corpus.CORPORA, "corpus"):
+                _log(f"corpus {name}: generating or loading from {bench_corpus.CACHE_DIR}")
+                corpora.append(bench_corpus.corpus(name, seconds))
+
+    started = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    t0 = time.monotonic()
+    result: dict = {"command": command_line(args), "started": started, "machine": bench_sections.machine()}
+    if "decode" in sections:
+        _log(f"decode: {len(corpora)} corpora x {len(impls)} implementations, up to {args.repeats} runs each")
+        result["decode"] = bench_decode.measure(corpora, impls, args.repeats, args.timeout, args.budget)
+    if "run" in sections:
+        _log("run: osdkc run --impl all")
+        result["run"] = bench_sections.conformance_run(args.timeout)
+    if "fuzz" in sections:
+        _log(f"fuzz: osdkc fuzz --impl all, {fuzz_examples} examples")
+        result["fuzz"] = bench_sections.fuzz(fuzz_examples, FUZZ_SEED, args.timeout)
+    if "acceptance" in sections:
+        _log(f"acceptance: osdkc soak, {soak_seconds:g} s")
+        result["acceptance"] = bench_sections.acceptance(soak_seconds, args.timeout + soak_seconds)
+    if "reliability" in sections:
+        _log(f"reliability: {args.runs} healthy active runs, {args.fault_runs} seeded runs of each fault")
+        result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.load_share, args.parallel,
+                                                          kinds)
+        result["reliability"]["command"] = command_line(args)
+    result["total_seconds"] = round(time.monotonic() - t0, 1)
+    result["machine"]["load_average_at_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
+    result["targets"] = bench_report.targets(result)
+    result["ok"] = _ok(result)
+
+    print(bench_report.terminal(result))
+    try:
+        if json_path:
+            json_path.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
+        if md_path:
+            bench_report.write_markdown(md_path, bench_report.markdown(result))
+    except OSError as e:
+        raise UsageError(f"cannot write the report: {e.strerror or e}") from None
+    return 0 if result["ok"] else 1
+
+
+def _ok(result: dict) -> bool:
+    decode = result.get("decode")
+    if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
+        return False
+    return all(result[s]["ok"] for s in ("run", "fuzz", "acceptance", "reliability") if s in result)
+
+
+def _log(text: str) -> None:
+    print(f"osdkc bench: {text}", file=sys.stderr, flush=True)

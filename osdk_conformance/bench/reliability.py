@@ -1,0 +1,226 @@
+"""`osdkc bench --only reliability`: no false FAIL, no missed fault.
+
+Healthy runs: `osdkc device --active --allow-motion` against a fault-free
+`osdkc sim` (a fresh one per run, seed = run number), a share of them beside
+one busy-loop process per core. Each must pass, send every command once (no
+retransmission: an ACK lost to a race makes the command go out again), and
+leave the simulator with control back at the RC and its initial broadcast
+rates (its --stats at exit).
+
+Fault runs: every fault kind the simulator injects, with seeds 1..N: the
+checks that fault must fail (docs/ACCEPTANCE.md, the simulator's table) fail
+in every run.
+
+Every run is a pair of child processes, exactly as a user runs them; the
+files of a run that went wrong are kept and their directory is printed.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+from osdk_conformance.core.capture import read_capture
+from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.wire import commands_sent
+from osdk_conformance.sim.simulator import spawned
+
+OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
+LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
+PROFILE, APP_ID = "a3-fw3.1", "1234"
+# The settings of the tests' active scenario: short steps, and an arrival
+# spread limit for a host shared with other work (the jitter fault is
+# measured with the default limit, in the fault runs).
+HEALTHY_DEVICE_ARGS = ("--profile", PROFILE, "--duration", "1", "--active", "--allow-motion", "--app-id", APP_ID,
+                       "--active-window", "1", "--motion-seconds", "1.2", "--max-jitter-ms", "150")
+RUN_TIMEOUT = 120.0
+
+# kind -> (simulator options, extra device options, checks that must fail, seconds of listening)
+FAULT_CASES: dict[str, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...], float]] = {
+    "noise": (("--noise", "0.05"), (), ("link.framing",), 2.5),
+    "bitflip": (("--bitflip", "0.05"), (), ("link.crc",), 2.5),
+    "drop_bytes": (("--drop-bytes", "0.05"), (), ("link.short_frames",), 2.5),
+    "truncate": (("--truncate", "0.05"), (), ("link.short_frames",), 2.5),
+    "bad_crc": (("--bad-crc", "0.05"), (), ("link.crc", "stream.sequence"), 2.5),
+    "duplicate": (("--duplicate", "0.05"), (), ("stream.duplicates",), 2.5),
+    "jitter": (("--jitter", "80"), (), ("stream.jitter",), 2.5),
+    "rate_drift": (("--rate-drift", "0.25"), (), ("stream.rates",), 2.5),
+    "implausible": (("--implausible",), (), ("values.quaternion_norm", "values.gps_health", "values.battery",
+                                             "values.rc_channels", "values.flight_status", "values.time_stamp"), 2.5),
+    "wrong_profile": (("--wrong-profile", "m100-fw3.1"), (), ("decode.profile", "decode.frames"), 2.5),
+    # the simulator's clock starts about a second before the device listens: the device must have the port
+    # open before the unplug, and listen long enough after the stall starts (at least 2.5 s of silence)
+    "stall": (("--stall-at", "2.5"), (), ("link.stall",), 5.0),
+    "unplug": (("--unplug-at", "4", "--unplug-for", "0.8"), (), ("link.connection",), 4.5),
+    "baud": (("--baud", "921600"), ("--baud", "115200"), ("link.baud",), 1.5),
+}
+
+
+def _log(text: str) -> None:
+    print(f"osdkc bench: reliability: {text}", file=sys.stderr, flush=True)
+
+
+def _pair(name: str, tmp: Path, sim_args: tuple[str, ...], dev_args: tuple[str, ...]) -> dict:
+    """One `osdkc sim` and one `osdkc device` against it: exit status, checks, simulator statistics."""
+
+    run_dir = tmp / name
+    run_dir.mkdir(parents=True, exist_ok=True)
+    stats, cap = run_dir / "sim-stats.json", run_dir / "capture.pcapng"
+    extra = ("--link", str(run_dir / "tty")) if "--unplug-at" in sim_args else ()
+    try:
+        with spawned(*sim_args, *extra, "--stats", str(stats)) as (url, _):
+            proc = subprocess.run([*OSDKC, "device", "--port", url, "--capture", str(cap), *dev_args],
+                                  capture_output=True, text=True, timeout=RUN_TIMEOUT)
+            code, out = proc.returncode, proc.stdout + proc.stderr
+    except subprocess.TimeoutExpired as e:
+        code, out = None, f"timed out after {RUN_TIMEOUT:g} s: {e.stdout or ''}"
+    except UsageError as e:   # the simulator did not start: this run went wrong, the next ones still count
+        code, out = None, str(e)
+    (run_dir / "device-output.txt").write_text(out)
+    try:
+        sim_stats = json.loads(stats.read_text())
+    except (OSError, ValueError):
+        sim_stats = {}
+    checks = {m.group(2): m.group(1) for m in LINE.finditer(out)}
+    return {"name": name, "dir": run_dir, "code": code, "checks": checks, "stats": sim_stats, "capture": cap,
+            "traceback": "Traceback" in out}
+
+
+def retransmissions(capture: Path) -> int:
+    """Commands that went out more than once with one SEQ (session 2: ACK wanted)."""
+
+    seen, again = set(), 0
+    for op in commands_sent(read_capture(capture).records):
+        if op.session == 2 and not op.is_ack:
+            again += op.seq in seen
+            seen.add(op.seq)
+    return again
+
+
+def _healthy_verdict(r: dict) -> list[str]:
+    """What went wrong in a healthy run ([] when nothing)."""
+    bad = [f"exit {r['code']}"] if r["code"] != 0 else []
+    bad += [f"{cid} {status}" for cid, status in r["checks"].items() if status in ("FAIL", "ERROR")]
+    if r["traceback"]:
+        bad.append("traceback")
+    st = r["stats"]
+    if not st:
+        bad.append("the simulator left no statistics")
+    else:
+        if st.get("control") != "rc" or st.get("control_pending"):
+            bad.append(f"simulator left with control {st.get('control')} (pending {st.get('control_pending')})")
+        if st.get("rates") != st.get("initial_rates"):
+            bad.append("simulator left with other broadcast rates than it started with")
+    if r["capture"].exists():
+        n = retransmissions(r["capture"])
+        r["retransmissions"] = n
+        if n:
+            bad.append(f"{n} command(s) retransmitted")
+    else:
+        bad.append("no capture")
+    return bad
+
+
+class _Load:
+    """One busy-loop process per core while the with-block runs."""
+
+    def __enter__(self):
+        self.procs = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(os.cpu_count() or 1)]
+        return self
+
+    def __exit__(self, *exc):
+        for p in self.procs:
+            p.kill()
+            p.wait()
+
+
+def _batch(jobs: int, tasks: list) -> list[dict]:
+    with ThreadPoolExecutor(max_workers=jobs) as pool:
+        return list(pool.map(lambda t: t(), tasks))
+
+
+def measure(runs: int, fault_runs: int, load_share: float, jobs: int, kinds: list[str] | None = None) -> dict:
+    t0 = time.monotonic()
+    tmp = Path(tempfile.mkdtemp(prefix="osdkc-reliability-"))
+    kinds = kinds or list(FAULT_CASES)
+    n_load = round(runs * load_share)
+    out: dict = {"command": "", "healthy": {"runs": runs, "under_load": n_load, "device_args": " ".join(HEALTHY_DEVICE_ARGS)},
+                 "faults": {}}
+
+    def healthy(i: int):
+        def one() -> dict:
+            r = _pair(f"healthy-{i:04d}", tmp, ("--profile", PROFILE, "--app-id", APP_ID, "--seed", str(i)),
+                      HEALTHY_DEVICE_ARGS)
+            r["problems"] = _healthy_verdict(r)
+            _log(f"{r['name']}: {'; '.join(r['problems']) or 'passed'}")   # progress, and numbers if cut short
+            return r
+        return one
+
+    _log(f"{runs - n_load} healthy active runs, {jobs} at a time")
+    results = _batch(jobs, [healthy(i) for i in range(runs - n_load)])
+    if n_load:
+        _log(f"{n_load} healthy active runs beside {os.cpu_count()} busy-loop processes")
+        with _Load():
+            loaded = _batch(jobs, [healthy(i) for i in range(runs - n_load, runs)])
+        for r in loaded:
+            r["load"] = True
+        results += loaded
+    problems = []
+    for r in results:
+        bad = r["problems"]
+        if bad:
+            problems.append({"run": r["name"], "under_load": r.get("load", False), "problems": bad, "kept": str(r["dir"])})
+        else:
+            shutil.rmtree(r["dir"], ignore_errors=True)
+    h = out["healthy"]
+    h["passed"] = runs - len(problems)
+    h["retransmissions"] = sum(r.get("retransmissions", 0) for r in results)
+    h["failures"] = problems
+    for kind in kinds if fault_runs else []:
+        sim_args, dev_extra, must_fail, seconds = FAULT_CASES[kind]
+        _log(f"fault {kind}: {fault_runs} seeded runs")
+        tasks = [lambda s=seed, k=kind: _pair(f"fault-{k}-{s:03d}", tmp, ("--profile", PROFILE, "--seed", str(s), *sim_args),
+                                               ("--profile", PROFILE, "--duration", f"{seconds:g}", *dev_extra))
+                 for seed in range(1, fault_runs + 1)]
+        missed = []
+        for seed, r in enumerate(_batch(jobs, tasks), start=1):
+            undetected = [c for c in must_fail if r["checks"].get(c) != "FAIL"]
+            if undetected or r["code"] != 1 or r["traceback"]:
+                missed.append({"seed": seed, "not failed": undetected, "exit": r["code"], "kept": str(r["dir"])})
+            else:
+                shutil.rmtree(r["dir"], ignore_errors=True)
+        out["faults"][kind] = {"runs": fault_runs, "detected": fault_runs - len(missed), "must_fail": list(must_fail),
+                               "missed": missed}
+    out["seconds"] = round(time.monotonic() - t0, 1)
+    out["ok"] = not problems and all(not f["missed"] for f in out["faults"].values())
+    if out["ok"]:
+        shutil.rmtree(tmp, ignore_errors=True)
+    else:
+        out["kept_dir"] = str(tmp)
+    return out
+
+
+def summary(rel: dict) -> str:
+    h = rel["healthy"]
+    text = (f"healthy: {h['passed']} of {h['runs']} active runs passed ({h['under_load']} under CPU load), "
+            f"{h['retransmissions']} commands retransmitted")
+    if h["failures"]:
+        text += "; went wrong: " + "; ".join(f"{p['run']}: {', '.join(p['problems'])}" for p in h["failures"][:5])
+    faults = rel["faults"]
+    if faults:
+        runs = {f["runs"] for f in faults.values()}
+        text += (f"; faults: {len(faults)} kinds x {'/'.join(map(str, sorted(runs)))} seeds, detected in "
+                 f"{sum(f['detected'] for f in faults.values())} of {sum(f['runs'] for f in faults.values())} runs")
+        missed = [f"{k} (seeds {', '.join(str(m['seed']) for m in f['missed'])})" for k, f in faults.items() if f["missed"]]
+        if missed:
+            text += "; missed: " + "; ".join(missed)
+    if rel.get("kept_dir"):
+        text += f"; files of the runs that went wrong: {rel['kept_dir']}"
+    return text

@@ -1,0 +1,219 @@
+"""What `osdkc bench` prints: the terminal tables, the Markdown block for
+docs/PERFORMANCE.md, and the verdict on each target of the issue."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from osdk_conformance.bench.decode import BASELINE
+from osdk_conformance.bench.reliability import summary
+
+BEGIN = "<!-- bench:begin (osdkc bench --markdown writes this part) -->"
+END = "<!-- bench:end -->"
+HOUR_CORPUS, HOUR = "a3-hour", 3600.0
+PYTHON_IMPLS = ("construct", "kaitai-python")
+
+
+def _num(x, fmt: str = "{:,.0f}") -> str:
+    return "–" if x is None else fmt.format(x)
+
+
+def _ratio(x) -> str:
+    if x is None:
+        return "–"
+    return f"{x:.3f}×" if x < 0.1 else f"{x:.2f}×"   # the slow ones still differ from each other
+
+
+def _corpus_title(c: dict, repeats: int) -> str:
+    e = c.get("expected")
+    what = (f"{e['frames']:,} frames, {e['errors']} errors, {e['garbage_bytes']:,} garbage bytes" if e
+            else "content unknown: counts checked between implementations")
+    length = f"{c['corpus_seconds']:g} s of traffic, " if c.get("corpus_seconds") else ""
+    return f"{c['name']} ({c['profile']}, {length}{c['bytes'] / 1e6:.1f} MB, {what}); best of up to {repeats} runs"
+
+
+DECODE_COLUMNS = ("implementation", "runs", "seconds", "frames/s", "MB/s", "peak RSS MiB", "vs baseline")
+
+
+def _decode_cells(r: dict) -> list[str]:
+    if not r.get("ok"):
+        return [r["impl"], str(r.get("runs", 0)), f"ERROR: {r.get('error', 'no result')}"]
+    return [r["impl"], str(r["runs"]), f"{r['seconds']:.3f}", _num(r["frames_per_s"]), _num(r["mb_per_s"], "{:,.1f}"),
+            _num(r["peak_rss_mib"], "{:,.1f}"), _ratio(r["ratio_to_baseline"])]
+
+
+# ---- targets ----------------------------------------------------------------------------------
+
+
+def _hour_seconds(decode: dict | None, impl: str) -> tuple[float | None, str]:
+    """An implementation's seconds for the one-hour corpus, extrapolated when a shorter one ran."""
+    for c in (decode or {}).get("corpora", []):
+        if c["name"] != HOUR_CORPUS:
+            continue
+        r = next((r for r in c["results"] if r["impl"] == impl and r.get("ok")), None)
+        if r is None:
+            return None, ""
+        if c["corpus_seconds"] == HOUR:
+            return r["seconds"], ""
+        return r["seconds"] * HOUR / c["corpus_seconds"], f" (extrapolated from {c['corpus_seconds']:g} s)"
+    return None, ""
+
+
+def recommended_python(decode: dict | None) -> str | None:
+    """The faster Python implementation on the one-hour corpus."""
+    timed = [(s, impl) for impl in PYTHON_IMPLS for s, _ in [_hour_seconds(decode, impl)] if s is not None]
+    return min(timed)[1] if timed else None
+
+
+def targets(result: dict) -> list[dict]:
+    decode, out = result.get("decode"), []
+    ratios = [(r["ratio_to_baseline"], c["name"]) for c in (decode or {}).get("corpora", [])
+              for r in c["results"] if r["impl"] == "c" and r.get("ratio_to_baseline") is not None]
+    out.append({"target": "generated C decoder (fully bounds-checked) at ≥ 50% of the memcpy baseline's throughput",
+                "measured": ", ".join(f"{_ratio(x)} on {n}" for x, n in ratios) or "not measured",
+                "met": min(x for x, _ in ratios) >= 0.5 if ratios else None})
+    best = recommended_python(decode)
+    secs, note = _hour_seconds(decode, best) if best else (None, "")
+    out.append({"target": "recommended Python implementation decodes the one-hour a3-fw3.1 corpus in < 10 s",
+                "measured": f"{best}: {secs:.1f} s{note}" if best else "not measured",
+                "met": secs < 10 if best else None})
+    run = result.get("run")
+    out.append({"target": "`osdkc run --impl all` in < 60 s on 2 cores",
+                "measured": (f"{run['wall_seconds']} s wall, {run['cpu_seconds']} s CPU, {run.get('jobs', '?')} "
+                             "implementations at a time") if run else "not measured",
+                "met": (run["wall_seconds"] < 60 and run["ok"]) if run else None})
+    acc = result.get("acceptance")
+    cpu = acc.get("receiver_cpu_percent") if acc else None
+    out.append({"target": "acceptance receiver < 5% of one core at 100 Hz",
+                "measured": f"{cpu}% of one core" if cpu is not None else "not measured",
+                "met": cpu < 5 if cpu is not None else None})
+    out += _reliability_targets(result.get("reliability"))
+    return out
+
+
+def _reliability_targets(rel: dict | None) -> list[dict]:
+    if rel is None:
+        return []
+    h, faults = rel["healthy"], rel["faults"]
+    fault_runs = min((f["runs"] for f in faults.values()), default=0)
+    return [{"target": "0 FAILs in ≥ 200 active runs against a healthy simulator, some under CPU load",
+             "measured": (f"{h['passed']} of {h['runs']} passed, {h['under_load']} under load, "
+                          f"{h['retransmissions']} retransmissions") if h["runs"] else "not measured",
+             # no healthy run (--runs 0) measured nothing: not a miss
+             "met": (h["runs"] >= 200 and h["under_load"] > 0 and h["passed"] == h["runs"]) if h["runs"] else None},
+            {"target": "each simulator fault kind detected in every one of ≥ 20 seeded runs",
+             "measured": (f"{len(faults)} kinds: detected in {sum(f['detected'] for f in faults.values())} of "
+                          f"{sum(f['runs'] for f in faults.values())} runs") if faults else "not measured",
+             "met": (fault_runs >= 20 and all(not f["missed"] for f in faults.values())) if faults else None}]
+
+
+def _verdict(met) -> str:
+    return "not measured" if met is None else "met" if met else "MISSED"
+
+
+def _others(result: dict) -> list[tuple[str, str, str]]:
+    rows = []
+    if run := result.get("run"):
+        per = ", ".join(f"{k} {v:.0f} s" for k, v in (run.get("per_impl_seconds") or {}).items() if v is not None)
+        rows.append(("conformance run", run["command"],
+                     f"{run['wall_seconds']} s wall, {run['cpu_seconds']} s CPU, {run.get('jobs', '?')} at a time"
+                     + (f" ({per})" if per else "") + ("" if run["ok"] else f"; FAILED: {run.get('error')}")))
+    if fz := result.get("fuzz"):
+        text = (f"{fz['execs_per_s']} execs/s ({fz['examples']} examples in {fz['seconds']} s; per operation: "
+                + ", ".join(f"{k} {v}" for k, v in fz.get("per_op_execs_per_s", {}).items()) + ")"
+                if "execs_per_s" in fz else "")
+        rows.append(("differential fuzzing, 6 implementations", fz["command"],
+                     text + ("" if fz["ok"] else f"; FAILED: {fz.get('error')}")))
+    if acc := result.get("acceptance"):
+        text = ""
+        if acc.get("receiver_cpu_percent") is not None:
+            lat = acc.get("latency_ms") or {}
+            text = (f"{acc['receiver_cpu_percent']}% of one core over {acc['duration_s']} s; "
+                    f"{acc['frames_lost']} of {acc['frames_sent']} frames lost; latency p50 {lat.get('p50')} ms, "
+                    f"p99 {lat.get('p99')} ms")
+        rows.append(("acceptance receiver, a3-fw3.1 every item at 100 Hz", acc["command"],
+                     text + ("" if acc["ok"] else f"; FAILED: {acc.get('error')}")))
+    if rel := result.get("reliability"):
+        rows.append(("reliability of osdkc device: healthy active runs, seeded faults", rel["command"],
+                     summary(rel) + f" ({rel['seconds']:.0f} s)"))
+    return rows
+
+
+# ---- terminal ---------------------------------------------------------------------------------
+
+
+def _table(header: tuple[str, ...], rows: list[list[str]]) -> list[str]:
+    width = [max([len(h)] + [len(r[i]) for r in rows if i < len(r) and len(r) == len(header)])
+             for i, h in enumerate(header)]
+    fmt = lambda cells: "  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(cells, width)))
+    lines = [fmt(header), "-" * (sum(width) + 2 * (len(width) - 1))]
+    for r in rows:
+        lines.append(fmt(r) if len(r) == len(header) else "  ".join([r[0].ljust(width[0]), r[1].rjust(width[1]), r[2]]))
+    return lines
+
+
+def terminal(result: dict) -> str:
+    lines = [f"osdkc bench: {result['command']}"]
+    if decode := result.get("decode"):
+        for c in decode["corpora"]:
+            lines += ["", "decode: " + _corpus_title(c, decode["repeats"])]
+            lines += ["  " + ln for ln in _table(DECODE_COLUMNS, [_decode_cells(r) for r in c["results"]])]
+        for m in decode["mismatches"]:
+            lines.append(f"MISMATCH: {m}")
+    for what, cmd, text in _others(result):
+        lines += ["", f"{what}: {cmd}", f"  {text}"]
+    lines += ["", "targets:"]
+    lines += [f"  [{_verdict(t['met'])}] {t['target']}: {t['measured']}" for t in result["targets"]]
+    return "\n".join(lines)
+
+
+# ---- Markdown ---------------------------------------------------------------------------------
+
+
+def _md_table(header: tuple[str, ...], rows: list[list[str]], align: str) -> list[str]:
+    out = ["| " + " | ".join(header) + " |", "|" + "|".join(align) + "|"]
+    for r in rows:
+        cells = r if len(r) == len(header) else r + [""] * (len(header) - len(r))
+        out.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+    return out
+
+
+def markdown(result: dict) -> str:
+    m = result["machine"]
+    lines = [BEGIN, "", f"Command: `{result['command']}` (run {result['started']}, {result['total_seconds']:.0f} s).",
+             "", "| machine | |", "|---|---|"]
+    lines += [f"| {k.replace('_', ' ')} | {v} |" for k, v in m.items()]
+    if decode := result.get("decode"):
+        lines += ["", "### Decode throughput, deframing included", "",
+                  f"Each implementation's bench mode (conformance/PROTOCOL.md); seconds are its read+deframe+decode "
+                  f"loop, best of up to {decode['repeats']} interleaved runs; peak RSS is the whole process "
+                  f"(runtime included); the ratio is MB/s against the `{BASELINE}` row of the same corpus."]
+        for c in decode["corpora"]:
+            lines += ["", f"**{_corpus_title(c, decode['repeats'])}**", ""]
+            lines += _md_table(DECODE_COLUMNS, [[f"`{x[0]}`", *x[1:]] for x in map(_decode_cells, c["results"])],
+                               ["---", "---:", "---:", "---:", "---:", "---:", "---:"])
+        if decode["mismatches"]:
+            lines += ["", "Count mismatches:", *[f"- {x}" for x in decode["mismatches"]]]
+        else:
+            lines += ["", "Every implementation reported the corpus generator's frame, error and garbage counts."]
+    others = _others(result)
+    if others:
+        lines += ["", "### Conformance run, fuzzing, acceptance receiver", ""]
+        lines += _md_table(("what", "command", "result"), [[w, f"`{c}`", t] for w, c, t in others], ["---"] * 3)
+    lines += ["", "### Targets", ""]
+    lines += _md_table(("target", "measured", "verdict"),
+                       [[t["target"], t["measured"], _verdict(t["met"])] for t in result["targets"]], ["---"] * 3)
+    return "\n".join(lines + ["", END])
+
+
+def write_markdown(path: Path, block: str) -> None:
+    """Replace the bench block of `path` when it has one (docs/PERFORMANCE.md), else write the block alone."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        text = ""
+    if BEGIN in text and END in text:
+        text = re.sub(re.escape(BEGIN) + r".*?" + re.escape(END), lambda _: block, text, flags=re.S)
+    else:
+        text = block + "\n"
+    path.write_text(text, encoding="utf-8")

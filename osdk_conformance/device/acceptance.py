@@ -1,0 +1,238 @@
+"""`osdkc device`: acceptance suite for a flight controller on a serial port.
+
+    osdkc device --port /dev/ttyUSB0 --baud 230400 --profile a3-fw3.1 --duration 10
+    osdkc device --port socket://127.0.0.1:5760 --profile m100-fw3.1 --active --app-id 1234567 --key-env OSDK_KEY
+    osdkc device --replay captures/device-....pcapng --profile a3-fw3.1
+
+Passive checks listen to the broadcast; `--active` adds the command
+exchange (version, activation, frequencies, control authority) and, only
+with `--allow-motion`, movement control. Every received and sent byte is
+recorded in a pcapng capture (core/capture.py) that `--replay` checks offline.
+Each check is a named Result (category = check group, id = check name), so
+the reports are those of `osdkc run`. docs/ACCEPTANCE.md lists every check.
+
+Exit status: EXIT_STATUS below (also the --help epilog and docs/ACCEPTANCE.md).
+An active run always ends through ActiveRun.clean_up (active.py).
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+from osdk_conformance.core.capture import CaptureError, CaptureWriter, RX, default_capture_path, open_capture
+from osdk_conformance.core.errors import UsageError, cannot_read, one_line
+from osdk_conformance.core.options import baud_rate, fraction, non_negative_float, positive_float, uint32
+from osdk_conformance.core.rules import RulesError, default_rules
+from osdk_conformance.core.wire import key_option
+from osdk_conformance.device.active import ActiveRun, Commander, EXIT_BY_SIGNAL, Interrupts, not_reached
+from osdk_conformance.device.analysis import Analyzer
+from osdk_conformance.device.checks import Options, passive_results
+from osdk_conformance.device.plots import checks_html, plots_html
+from osdk_conformance.device.port import Port
+from osdk_conformance.harness.report import ERROR, PASS, SKIP, Result, conforms, summary_table, write_html, write_junit
+
+EXIT_STATUS = ("exit status: 0 every check passed, 1 a check failed or errored, 2 usage or port error, "
+               "130 interrupted by SIGINT, 143 by SIGTERM (an interrupted run releases control, restores the "
+               "rates it changed and still writes its reports; a second SIGINT cuts that clean-up short)")
+
+MOTION_WARNING = """\
+!!! WARNING: --allow-motion sends MOVEMENT CONTROL commands. On a real flight
+!!! controller this MOVES THE AIRCRAFT (attitude, velocity, position and height
+!!! changes of several metres). Remove the propellers or use the DJI simulator,
+!!! keep the RC in hand and be ready to take over."""
+
+
+# --------------------------------------------------------------------------
+# Command line
+
+
+def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    src = ap.add_mutually_exclusive_group(required=True)
+    src.add_argument("--port", metavar="URL", help="serial port: /dev/ttyUSB0, a pty path, socket://HOST:PORT, rfc2217://...")
+    src.add_argument("--replay", metavar="FILE", help="run the passive checks on a pcapng capture instead")
+    ap.add_argument("--baud", type=baud_rate, default=230400, help="baud rate (default 230400)")
+    ap.add_argument("--profile", required=True, choices=profiles, help="broadcast wire profile of the flight controller")
+    ap.add_argument("--duration", type=positive_float, default=10.0, metavar="S", help="seconds of passive listening (default 10)")
+    ap.add_argument("--active", action="store_true", help="also send commands: version, activation, frequency, control")
+    ap.add_argument("--allow-motion", action="store_true", help="with --active: send movement control (MOVES THE AIRCRAFT)")
+    ap.add_argument("--app-id", type=uint32, help="app id for activation (with --active)")
+    ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
+    ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt the commands sent (needs --key-env)")
+    ap.add_argument("--capture", metavar="FILE", help="pcapng capture file (default captures/device-<time>-<pid>.pcapng)")
+    ap.add_argument("--no-capture", action="store_true", help="do not record a capture")
+    ap.add_argument("--junit", metavar="FILE", help="write a JUnit XML report")
+    ap.add_argument("--html", metavar="FILE", help="write a self-contained HTML report with plots")
+    ap.add_argument("--rate-tolerance", type=fraction, default=0.10, metavar="FRAC", help="allowed rate error (default 0.10)")
+    ap.add_argument("--max-link-errors", type=non_negative_float, default=0.001, metavar="FRAC",
+                    help="allowed link incidents per frame, per kind (default 0.001)")
+    ap.add_argument("--max-jitter-ms", type=positive_float, default=25.0, metavar="MS", help="allowed arrival spread (default 25)")
+    ap.add_argument("--stall-timeout", type=positive_float, default=1.0, metavar="S", help="longest silence allowed (default 1)")
+    ap.add_argument("--flight-status-enum", choices=("old", "new"), help="override the profile's flight status enum")
+    ap.add_argument("--expect-rate", action="append", default=[], metavar="ITEM=HZ",
+                    help="a rate the FC is configured for, when not the profile default (repeatable)")
+    ap.add_argument("--active-window", type=positive_float, default=2.0, metavar="S",
+                    help="seconds to measure rates after setting frequencies (default 2)")
+    ap.add_argument("--motion-seconds", type=positive_float, default=1.5, metavar="S",
+                    help="seconds each movement command is held (default 1.5; position 5/3 of it)")
+    ap.add_argument("-q", "--quiet", action="store_true", help="print only the summary and the failures")
+    ap.epilog = EXIT_STATUS
+
+
+def _options(args) -> Options:
+    prof = default_rules().profile(args.profile)
+    rates = {}
+    for spec in args.expect_rate:
+        item, _, hz = spec.partition("=")
+        if item not in prof.flag_bits or not hz.isdigit():
+            raise UsageError(f"--expect-rate {spec}: want ITEM=HZ, ITEM one of {', '.join(prof.flag_bits)}")
+        rates[item] = int(hz)
+    try:
+        if args.flight_status_enum:
+            default_rules().flight_status_enum(args.profile, args.flight_status_enum)
+    except RulesError as e:
+        raise UsageError(str(e)) from None
+    return Options(profile=args.profile, duration=args.duration, rate_tolerance=args.rate_tolerance,
+                   max_link_errors=args.max_link_errors, max_jitter_ms=args.max_jitter_ms,
+                   stall_timeout=args.stall_timeout, flight_status_enum=args.flight_status_enum,
+                   expect_rates=rates or None)
+
+
+def print_results(results: list[Result], quiet: bool, stream=None) -> None:
+    stream = stream or sys.stdout
+    for r in results:
+        if quiet and r.status in (PASS, SKIP):
+            continue
+        stream.write(f"{r.status.upper():5} {r.id:28} {r.message}\n")
+    stream.write("\n" + summary_table(results) + "\n")
+
+
+def write_reports(args, results: list[Result], an, meta: dict) -> None:
+    if args.junit:
+        write_junit(args.junit, results, "osdkc device", {k: str(v) for k, v in meta.items()})
+    if args.html:
+        write_html(args.html, results, f"OPEN protocol acceptance: {meta.get('profile')}", meta,
+                   extra_html=checks_html(results) + plots_html(an))
+
+
+def run_device(args: argparse.Namespace) -> int:
+    opts = _options(args)
+    key = key_option(args.key_env, args.encrypt)
+    if args.allow_motion and not args.active:
+        raise UsageError("--allow-motion needs --active")
+    an = Analyzer(args.profile, key, opts.expect_rates, opts.flight_status_enum)
+    if args.replay:
+        return _replay(args, an, opts)
+
+    if args.allow_motion:
+        print(MOTION_WARNING, file=sys.stderr, flush=True)
+    port = Port(args.port, args.baud, an)
+    port.open(start=False)   # before the capture: a port that cannot be opened leaves no file behind
+    interrupts = Interrupts()
+    interrupts.install()
+    try:
+        cap = _open_capture(args, port)
+        port.critical = interrupts.critical
+        return _live(args, opts, an, port, cap, key, interrupts)
+    finally:
+        interrupts.uninstall()
+
+
+def _open_capture(args, port: Port):
+    if args.no_capture:
+        return None
+    path = Path(args.capture) if args.capture else default_capture_path()
+    meta_c = {"tool": "osdkc device", "profile": args.profile, "port": args.port, "baud": args.baud,
+              "started": time.strftime("%Y-%m-%dT%H:%M:%S%z")}
+    try:
+        cap = CaptureWriter(path, meta_c)
+    except OSError as e:
+        port.close()
+        raise UsageError(f"cannot write the capture {path}: {e.strerror or e}") from None
+    return cap
+
+
+def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
+    """Listen, run the active checks (which clean up after themselves however
+    they end), then report every result measured, whatever ended the run."""
+
+    results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
+    run: ActiveRun | None = None
+    error = ""
+    try:
+        if cap:
+            print(f"osdkc device: capturing to {cap.path}", file=sys.stderr, flush=True)
+        port.start(cap)
+        end = time.monotonic() + args.duration
+        while time.monotonic() < end:
+            time.sleep(min(0.1, max(0.0, end - time.monotonic())))
+        if args.active and port.ser is None:
+            results.append(Result("active", "active.version", ERROR, "port down: active checks not run"))
+        elif args.active:
+            run = ActiveRun(Commander(port, an, args.profile, key, args.encrypt), an, opts, args.app_id,
+                            args.allow_motion, args.active_window, args.motion_seconds, interrupts)
+            run.run()
+    except KeyboardInterrupt:
+        pass   # the signal is in interrupts.signals; ActiveRun has cleaned up
+    except Exception as e:   # a bug of ours: the clean-up ran, the results so far are still reported
+        error = f"{type(e).__name__}: {one_line(e)}"
+    finally:
+        interrupts.mode = "report"
+        port.close()
+        an.finish(port.state.t_end)
+        if cap:
+            cap.close()
+    with an.lock:
+        results += passive_results(an, opts, port.state)
+    signame = interrupts.first
+    phase = interrupts.first_phase if signame else (run.stopped_in or run.phase) if run else "passive"
+    if run:
+        results += run.results
+    if args.active and (signame or error):
+        why = f"interrupted by {signame}" if signame else "stopped by an error"
+        results += not_reached(results, f"the run was {why} during phase {phase}")
+    cleanup = (run.cleanup_cut if run and run.cleanup_cut else "complete") if run else "nothing to undo"
+    if signame:
+        results.append(Result("run", "run.complete", ERROR, f"interrupted by {signame} during phase {phase}; "
+                              f"clean-up: {cleanup}", {"signals": interrupts.signals, "phase": phase,
+                                                       "clean-up": cleanup}, kind="interrupted"))
+    elif error:
+        results.append(Result("run", "run.complete", ERROR, f"the run stopped on an internal error during phase "
+                              f"{phase}: {error}; clean-up: {cleanup}", {"phase": phase, "clean-up": cleanup},
+                              kind="exception"))
+    meta = {"profile": args.profile, "port": args.port, "baud": args.baud, "duration s": args.duration,
+            "capture": str(cap.path) if cap else "none", "active": args.active,
+            "interrupted": f"{signame} during phase {phase}" if signame else "no", "clean-up": cleanup}
+    print_results(results, args.quiet)
+    write_reports(args, results, an, meta)
+    ok = conforms(results)
+    if signame:
+        print(f"\nosdkc device: INTERRUPTED by {signame} during phase {phase}, clean-up {cleanup} "
+              f"({args.profile} on {args.port})")
+        return EXIT_BY_SIGNAL.get(signame, 130)
+    print(f"\nosdkc device: {'PASS' if ok else 'FAIL'} ({args.profile} on {args.port})")
+    return 0 if ok else 1
+
+
+def _replay(args, an, opts: Options) -> int:
+    try:
+        with open_capture(args.replay) as capf:  # block by block: memory does not grow with the file
+            for rec in capf:
+                (an.feed_rx if rec.direction == RX else an.feed_tx)(rec.t, rec.data)
+    except OSError as e:
+        raise UsageError(cannot_read(args.replay, e, "capture")) from None
+    except CaptureError as e:  # names the file and the offset of the damage
+        raise UsageError(str(e)) from None
+    an.finish()
+    results = passive_results(an, opts, None)
+    meta = {"profile": args.profile, "replay": args.replay, "records": capf.count,
+            "incomplete last block bytes": capf.partial_tail, **{f"capture {k}": v for k, v in capf.comment.items()}}
+    if capf.partial_tail:
+        print(f"osdkc device: {args.replay} ends in an incomplete block ({capf.partial_tail} bytes; "
+              "the recording process was killed): replaying the complete blocks", file=sys.stderr)
+    print_results(results, args.quiet)
+    write_reports(args, results, an, meta)
+    ok = conforms(results)
+    print(f"\nosdkc device: {'PASS' if ok else 'FAIL'} ({args.profile}, replay of {args.replay})")
+    return 0 if ok else 1

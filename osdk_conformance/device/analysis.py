@@ -1,0 +1,410 @@
+"""What the acceptance suite measures in a received byte stream.
+
+`Analyzer` takes received (rx) and sent (tx) bytes with their times, live
+from a port or replayed from a capture, and keeps everything the checks
+need: link incidents (noise, CRC failures, frames cut short), decoded
+broadcast frames (flags, sequence numbers, arrival times, item times),
+value plausibility findings, attitude/velocity/position traces, ACKs of
+the commands sent, and "epochs": spans of time with one set of configured
+broadcast rates (profile defaults, then whatever an acknowledged set
+frequency command asked for). The functions of checks.py
+turn this into Results.
+"""
+from __future__ import annotations
+
+import math
+import threading
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+from osdk_conformance.core.errors import one_line
+from osdk_conformance.core.deframe import HEADER_LEN, Deframer, Frame, Garbage, Rejected
+from osdk_conformance.core.rules import default_rules, hz_of_code
+from osdk_conformance.core.wire import open_frame
+from osdk_conformance.reference.decode import classify
+from osdk_conformance.sim.simulator import quaternion_to_euler
+from osdk_construct.compiled import parse
+from osdk_construct.payload import osdk_payload
+
+HZ_OF_CODE = hz_of_code()
+CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
+MAX_EXAMPLES = 5
+CLOCK_AGREEMENT = 0.25   # a time stamp clock that runs off the host's by more is not trusted for rates
+
+
+@dataclass
+class Epoch:
+    start: float
+    rates: dict[str, int]
+    source: str
+    requested: float | None = None   # when the command setting these rates was first sent
+
+
+@dataclass
+class Finding:
+    """Violations of one value rule: how many, out of how many samples, first examples."""
+
+    samples: int = 0
+    count: int = 0
+    examples: list[str] = field(default_factory=list)
+
+    def add(self, ok: bool, example: Callable[[], str]) -> None:
+        """One sample; `example()` describes a violation, and is only called
+        for the ones kept (formatting every sample cost more than checking it)."""
+        self.samples += 1
+        if not ok:
+            self.count += 1
+            if len(self.examples) < MAX_EXAMPLES:
+                self.examples.append(example())
+
+
+_VECTOR_ITEMS = (("acceleration", ("x", "y", "z")), ("velocity", ("x", "y", "z")),
+                 ("angular_rate", ("x", "y", "z")), ("gimbal", ("roll", "pitch", "yaw")))
+"""Items of three floats that must be finite, with their field names."""
+
+VALUE_RULES = ("quaternion_norm", "gps_health", "battery", "rc_channels", "flight_status", "time_stamp",
+               "control_info", "finite")
+
+
+class Analyzer:
+    def __init__(self, profile: str, key: bytes | None = None, expect_rates: dict[str, int] | None = None,
+                 flight_status_enum: str | None = None) -> None:
+        rules = default_rules()
+        self.rules = rules
+        self.profile_name = profile
+        self.prof = rules.profile(profile)
+        self.key = key
+        self._payload = osdk_payload
+        self._parse = parse  # compiled where safe: at 100 Hz the interpreter alone costs ~5% of a core
+        self._bcast = osdk_payload(2, 0, False, profile)
+        self.lock = threading.RLock()
+        self.ack_cond = threading.Condition(self.lock)
+        self.rx_deframer = Deframer()
+        self.tx_deframer = Deframer()
+        rates = dict(self.prof.default_rates_hz)
+        rates.update(expect_rates or {})
+        self.epochs: list[Epoch] = [Epoch(0.0, rates, "expected" if expect_rates else "profile defaults")]
+        self.first_t: float | None = None
+        self.last_t: float | None = None
+        self.rx_bytes = 0
+        self.rx_chunks: list[tuple[float, int]] = []   # arrival time, bytes
+        # link
+        self.frames = 0
+        self.incidents: list[tuple[float, str, int, str]] = []   # t, kind, bytes, detail
+        self._gap: list[Any] = []
+        self._gap_t = 0.0
+        self._last_end: int | None = None
+        self.leading_bytes = 0
+        # decode
+        self.decode_errors: dict[str, int] = {}
+        self.decode_examples: list[str] = []
+        self.undecoded_broadcasts: list[bytes] = []
+        self.encrypted_unopened = 0
+        # stream
+        self.bcast: list[tuple[float, int, int]] = []          # t, seq, flags
+        self.bcast_raw_prev: bytes | None = None
+        self.duplicates = 0
+        self.item_times: dict[str, list[float]] = {i: [] for i in self.prof.flag_bits}
+        # the same frames on the flight controller's own clock (its time stamp item, s), None when not known
+        self.item_clock: dict[str, list[float | None]] = {i: [] for i in self.prof.flag_bits}
+        self._clock_ticks: int | None = None
+        self._clock_s = 0.0
+        self.cmd_frames: dict[str, int] = {}
+        # values
+        fs = rules.flight_status_enum(profile, flight_status_enum)
+        self.flight_status_values = fs
+        self.findings: dict[str, Finding] = {r: Finding() for r in VALUE_RULES}
+        self._prev_ticks: int | None = None
+        rc = rules.data["rc_channels"]["channels"]
+        self.rc_rules = rc
+        # (channel, min, max, allowed values or None when continuous), worked out once, not per frame
+        self._rc_checks = [(ch, r.get("min"), r.get("max"),
+                            None if r["kind"] == "continuous" else [x["value"] for x in r["values"]])
+                           for ch, r in rc.items()]
+        self.control_devices = rules.enum("control_device")
+        self.cur_modes = rules.enum("cur_mov_control_mode")
+        self.latest: dict[str, tuple[float, Any]] = {}
+        self.traces: dict[str, list[tuple]] = {"attitude": [], "velocity": [], "position": []}
+        # commands sent and their ACKs
+        self.sent: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        self.acks: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        self.on_broadcast: Callable[[float, Any], None] | None = None
+
+    # ---- input -----------------------------------------------------------
+
+    def feed_rx(self, t: float, chunk: bytes) -> None:
+        with self.lock:
+            if self.first_t is None:
+                self.first_t = t
+                self.epochs[0].start = t
+            self.last_t = t
+            self.rx_bytes += len(chunk)
+            self.rx_chunks.append((t, len(chunk)))
+            for ev in self.rx_deframer.feed(chunk):
+                self._rx_event(t, ev)
+
+    def feed_tx(self, t: float, chunk: bytes) -> None:
+        with self.lock:
+            for ev in self.tx_deframer.feed(chunk):
+                if isinstance(ev, Frame):
+                    op = open_frame(ev.raw, self.key)
+                    if not op.is_ack and op.cmd_set is not None and op.session > 0:
+                        key, new = (op.session, op.seq), (t, op.cmd_set, op.cmd_id, op.value)
+                        old = self.sent.get(key)
+                        if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
+                            self.sent[key] = new
+
+    def finish(self, t: float | None = None) -> None:
+        with self.lock:
+            for ev in self.rx_deframer.finish():
+                if isinstance(ev, Rejected) and ev.error == "truncated_frame":
+                    continue   # the run ended in the middle of a frame: not the device's fault
+                self._rx_event(self.last_t or 0.0, ev)
+            self._close_gap(final=True)
+            if t is not None:
+                self.last_t = max(self.last_t or t, t)
+
+    # ---- link ------------------------------------------------------------
+
+    def _rx_event(self, t: float, ev) -> None:
+        if isinstance(ev, Frame):
+            if self._gap:
+                self._close_gap(end=ev.offset)
+            self._last_end = ev.offset + len(ev.raw)
+            self.frames += 1
+            self._frame(t, ev.raw)
+        else:
+            if not self._gap:
+                self._gap_t = t
+            self._gap.append(ev)
+
+    def _close_gap(self, end: int | None = None, final: bool = False) -> None:
+        gap, self._gap = self._gap, []
+        if not gap:
+            return
+        start = gap[0].offset
+        if end is None:
+            last = gap[-1]
+            end = last.offset + last.length
+        n = end - start
+        if self._last_end is None:
+            # bytes before the first good frame: the run joined the stream mid-frame
+            self.leading_bytes += n
+            return
+        first = gap[0]
+        if isinstance(first, Garbage):
+            kind, detail = "noise", f"{n} byte(s) outside any frame"
+        elif first.error == "bad_crc32":
+            if n < first.length:
+                kind, detail = "short", f"frame of LEN {first.length} interrupted after {n} byte(s) by the next frame"
+            else:
+                kind, detail = "crc", first.detail
+        elif n < HEADER_LEN:
+            kind, detail = "short", f"frame interrupted after {n} byte(s), inside its header"
+        elif first.error == "bad_crc16":
+            kind, detail = "crc", first.detail
+        elif first.error == "truncated_frame":
+            kind, detail = "short", first.detail
+        else:
+            kind, detail = "header", f"{first.error}: {first.detail}"
+        self.incidents.append((self._gap_t, kind, n, detail))
+
+    # ---- frames ----------------------------------------------------------
+
+    def _frame(self, t: float, raw: bytes) -> None:
+        op = open_frame(raw, self.key)
+        if op.problem:
+            if op.encrypted:
+                self.encrypted_unopened += 1
+            self._decode_error("undecodable", op.problem)
+            return
+        if op.is_ack:
+            with self.ack_cond:
+                key = (op.session, op.seq)
+                sent = self.sent.get(key)
+                if sent:
+                    self.acks[key] = (t, sent[1], sent[2], op.value)
+                    if (sent[1], sent[2]) == (0x00, 0x10):
+                        self._frequency_acked(t, sent[3], op.value, sent[0])
+                self.ack_cond.notify_all()
+            return
+        name = {(2, 0): "broadcast", (2, 1): "lost_control"}.get((op.cmd_set, op.cmd_id), "other")
+        self.cmd_frames[name] = self.cmd_frames.get(name, 0) + 1
+        if name != "broadcast":
+            try:
+                self._parse(self._payload(op.cmd_set, op.cmd_id, False, self.profile_name), op.value)
+            except Exception as e:
+                self._decode_error(_error_class(e), f"command {op.cmd_set:#04x}/{op.cmd_id:#04x}: {one_line(e)}")
+            return
+        try:
+            data = self._parse(self._bcast, op.value).body.data
+        except Exception as e:
+            self._decode_error(_error_class(e), f"broadcast seq {op.seq}, {len(op.value)} bytes: {one_line(e)}")
+            if len(self.undecoded_broadcasts) < 200:
+                self.undecoded_broadcasts.append(op.value)
+            return
+        flags = op.value[0] | op.value[1] << 8
+        self.bcast.append((t, op.seq, flags))
+        if self.bcast_raw_prev == raw:
+            self.duplicates += 1
+        self.bcast_raw_prev = raw
+        ts = data.get("time_stamp")
+        clock = self._fc_clock(ts.time) if ts is not None else None
+        for bit, item in enumerate(self.prof.flag_bits):
+            if flags >> bit & 1:
+                self.item_times[item].append(t)
+                self.item_clock[item].append(clock)
+        self._values(t, data)
+        if self.on_broadcast:
+            self.on_broadcast(t, data)
+
+    def _decode_error(self, cls: str, detail: str) -> None:
+        self.decode_errors[cls] = self.decode_errors.get(cls, 0) + 1
+        if len(self.decode_examples) < MAX_EXAMPLES:
+            self.decode_examples.append(f"{cls}: {detail}")
+
+    # ---- values ----------------------------------------------------------
+
+    def _values(self, t: float, d) -> None:
+        f = self.findings
+        ts = d.get("time_stamp")
+        if ts is not None:
+            ticks, prev = ts.time, self._prev_ticks
+            if prev is not None:
+                back = (ticks - prev) % (1 << 32) > (1 << 31)
+                f["time_stamp"].add(not back, lambda: f"t={t:.3f}: time {ticks} after {prev}")
+            self._prev_ticks = ticks
+            self.latest["time_stamp"] = (t, ts)
+        quat = d.get("quaternion")
+        if quat is not None:
+            q = [float(quat["q0"]), float(quat["q1"]), float(quat["q2"]), float(quat["q3"])]
+            norm = math.sqrt(sum(c * c for c in q))
+            f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, lambda: f"t={t:.3f}: |q| = {norm:.6g}")
+            if all(math.isfinite(c) for c in q):
+                r, p, y = (math.degrees(a) for a in quaternion_to_euler(*q))
+                self.traces["attitude"].append((t, r, p, y))
+                self.latest["attitude"] = (t, (r, p, y))
+        for item, keys in _VECTOR_ITEMS:
+            v = d.get(item)
+            if v is not None:
+                vals = [float(v[k]) for k in keys]
+                f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: {item} {vals}")
+                self.latest[item] = (t, vals)
+                if item == "velocity":
+                    self.traces["velocity"].append((t, *vals))
+        pos = d.get("position")
+        if pos is not None:
+            vals = [float(pos["latitude"]), float(pos["longitude"]), float(pos["altitude"]), float(pos["height"])]
+            f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: position {vals}")
+            health = pos.gps_health
+            f["gps_health"].add(0 <= health <= 5, lambda: f"t={t:.3f}: gps_health {health}")
+            self.latest["position"] = (t, vals)
+            self.traces["position"].append((t, *vals))
+        battery = d.get("battery")
+        if battery is not None:
+            f["battery"].add(0 <= battery <= 100, lambda: f"t={t:.3f}: battery {battery}%")
+        status = d.get("flight_status")
+        if status is not None:
+            f["flight_status"].add(status in self.flight_status_values,
+                                   lambda: f"t={t:.3f}: flight status {status} not in "
+                                           f"{sorted(self.flight_status_values)}")
+        rc = d.get("rc")
+        if rc is not None:
+            bad = []
+            for ch, lo, hi, allowed in self._rc_checks:
+                v = rc[ch]
+                if allowed is None:
+                    if not lo <= v <= hi:
+                        bad.append(f"{ch} {v} outside {lo}..{hi}")
+                elif v not in allowed:
+                    bad.append(f"{ch} {v} not one of {allowed}")
+            f["rc_channels"].add(not bad, lambda: f"t={t:.3f}: " + "; ".join(bad))
+            self.latest["rc"] = (t, rc)
+        ci = d.get("control_info")
+        if ci is not None:
+            dev = int(ci.control_device)
+            bad = [] if dev in self.control_devices else [f"control device {dev}"]
+            if ci.get("cur_mov_control_mode") is not None and int(ci.cur_mov_control_mode) not in self.cur_modes:
+                bad.append(f"cur_mov_control_mode {int(ci.cur_mov_control_mode)}")
+            f["control_info"].add(not bad, lambda: f"t={t:.3f}: " + ", ".join(bad) + " not defined")
+            self.latest["control_info"] = (t, ci)
+
+    # ---- configuration epochs ------------------------------------------------
+
+    def _frequency_acked(self, t: float, request: bytes, ack: bytes, requested: float | None = None) -> None:
+        if len(ack) < 2 or int.from_bytes(ack[:2], "little") != 0 or len(request) < 16:
+            return
+        rates = dict(self.epochs[-1].rates)
+        for item, code in zip(self.prof.flag_bits, request):
+            if code in HZ_OF_CODE:
+                rates[item] = HZ_OF_CODE[code]
+        self.epochs.append(Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}", requested))
+
+    def epoch_end(self, i: int) -> float:
+        """Where epoch i's measurements stop: when the next configuration was
+        requested (the device may apply it before its ACK arrives, and a frame
+        at the new rates can come in the very read that brings the ACK)."""
+        if i + 1 < len(self.epochs):
+            nxt = self.epochs[i + 1]
+            return nxt.start if nxt.requested is None else min(nxt.start, nxt.requested)
+        return self.last_t or self.epochs[i].start
+
+    def _fc_clock(self, ticks: int) -> float | None:
+        """The flight controller's time stamp (1/400 s ticks, 32 bits) as
+        seconds that only go forward; None for a frame whose ticks went back."""
+        prev, self._clock_ticks = self._clock_ticks, ticks
+        if prev is not None:
+            step = (ticks - prev) % (1 << 32)
+            if step >= 1 << 31:
+                return None
+            self._clock_s += step / 400.0
+        return self._clock_s
+
+    # ---- measurements --------------------------------------------------------
+
+    def measure_rates(self, rates: dict[str, int], t0: float, t1: float) -> dict[str, dict]:
+        """Per item: expected Hz, frames carrying it that arrived in [t0, t1],
+        measured Hz: (frames - 1) / the time from the first to the last, on
+        the flight controller's time stamp clock when every one of those
+        frames has it and its span agrees with the arrival span within
+        CLOCK_AGREEMENT (a host that was not scheduled for a moment reads a
+        burst of late frames: on the arrival clock the rate looks higher),
+        else on the arrival clock."""
+        out = {}
+        for item in self.prof.flag_bits:
+            pairs = [(t, c) for t, c in zip(self.item_times[item], self.item_clock[item]) if t0 <= t <= t1]
+            n, measured, clock = len(pairs), None, "arrival"
+            if n >= 3:
+                span = pairs[-1][0] - pairs[0][0]
+                fc = pairs[-1][1] - pairs[0][1] if all(c is not None for _, c in pairs) else None
+                if fc is not None and fc > 0 and abs(fc - span) <= CLOCK_AGREEMENT * span:
+                    span, clock = fc, "flight controller time stamp"
+                measured = (n - 1) / span if span > 0 else None
+            out[item] = {"expected_hz": rates.get(item, 0), "frames": n,
+                         "measured_hz": None if measured is None else round(measured, 2), "clock": clock}
+        return out
+
+    def frames_between(self, t0: float, t1: float) -> list[tuple[float, int, int]]:
+        return [b for b in self.bcast if t0 <= b[0] <= t1]
+
+    def wait_ack(self, session: int, seq: int, timeout: float) -> tuple[float, int, int, bytes] | None:
+        with self.ack_cond:
+            self.ack_cond.wait_for(lambda: (session, seq) in self.acks, timeout)
+            return self.acks.get((session, seq))
+
+
+def _error_class(exc: Exception) -> str:
+    import construct
+
+    if isinstance(exc, construct.ConstructError):
+        return classify(exc)
+    return "undecodable"
+
+
+def percentile(values: list[float], p: float) -> float:
+    if not values:
+        return float("nan")
+    s = sorted(values)
+    k = (len(s) - 1) * p / 100.0
+    lo, hi = math.floor(k), math.ceil(k)
+    return s[lo] + (s[hi] - s[lo]) * (k - lo)

@@ -1,0 +1,121 @@
+"""The serial port of a live acceptance run: a reader thread that feeds the
+analyzer and the capture, reopening after the device goes away, and a
+writer that records before it sends."""
+from __future__ import annotations
+
+import contextlib
+import threading
+import time
+from dataclasses import dataclass, field
+
+import serial
+
+from osdk_conformance.core.errors import UsageError, one_line
+
+
+
+@dataclass
+class LinkState:
+    t_open: float = 0.0
+    t_end: float = 0.0
+    disconnects: list = field(default_factory=list)   # [t_lost, t_back or None, why]
+
+
+class PortDown(Exception):
+    pass
+
+
+class Port:
+    """The serial port, a reader thread that feeds the analyzer and the
+    capture, reopening after the device goes away, and a writer."""
+
+    def __init__(self, url: str, baud: int, analyzer, capture=None) -> None:
+        self.url, self.baud, self.an, self.cap = url, baud, analyzer, capture
+        self.state = LinkState()
+        self.ser = None
+        self.stop = threading.Event()
+        self.wlock = threading.Lock()
+        self.thread: threading.Thread | None = None
+        # a section no signal exception may interrupt (Interrupts.critical in a live run)
+        self.critical = contextlib.nullcontext
+
+    def _open(self):
+        return serial.serial_for_url(self.url, baudrate=self.baud, timeout=0.05, write_timeout=1.0)
+
+    def open(self, start: bool = True) -> None:
+        """Open the port and (unless `start` is False) start reading."""
+        try:
+            self.ser = self._open()
+        except Exception as e:  # SerialException, ValueError (bad URL), OSError
+            raise UsageError(f"cannot open port {self.url}: {one_line(e)}") from None
+        if start:
+            self.start(self.cap)
+
+    def start(self, capture) -> None:
+        """Attach the capture, then start reading: the capture holds every byte the analyzer counts."""
+        with self.critical():   # a signal here leaves either no reader or a started one
+            self.cap = capture
+            self.state.t_open = time.time()
+            self.thread = threading.Thread(target=self._reader, name="osdkc-reader", daemon=True)
+            self.thread.start()
+
+    def _reader(self) -> None:
+        while not self.stop.is_set():
+            ser = self.ser
+            if ser is None:
+                try:
+                    ser = self._open()
+                except Exception:
+                    self.stop.wait(0.25)
+                    continue
+                self.ser = ser
+                self.state.disconnects[-1][1] = time.time()
+            try:
+                waiting = ser.in_waiting
+                data = ser.read(min(65536, waiting) if waiting else 1)
+            except Exception as e:
+                t = time.time()
+                self.state.disconnects.append([t, None, one_line(e)])
+                with self.wlock:
+                    try:
+                        ser.close()
+                    except Exception:
+                        pass
+                    self.ser = None
+                continue
+            if data:
+                ts = time.time_ns()
+                if self.cap:
+                    self.cap.rx(data, ts)
+                self.an.feed_rx(ts / 1e9, data)
+
+    def write(self, data: bytes) -> None:
+        """Record and register the bytes, then send them. In that order: an ACK
+        that comes back at once finds its command (else it is dropped and the
+        command sent again), and the capture keeps the order the device saw.
+        Bytes a failing write may have sent in part stay recorded."""
+        with self.critical(), self.wlock:
+            if self.ser is None:
+                raise PortDown("the port is down")
+            ts = time.time_ns()
+            if self.cap:
+                self.cap.tx(data, ts)
+            self.an.feed_tx(ts / 1e9, data)
+            try:
+                self.ser.write(data)
+            except Exception as e:
+                raise PortDown(one_line(e)) from None
+
+    def close(self) -> None:
+        self.stop.set()
+        if self.thread and self.thread.ident is not None:
+            self.thread.join(2.0)
+        self.state.t_end = time.time()
+        with self.wlock:
+            if self.ser is not None:
+                try:
+                    self.ser.close()
+                except Exception:
+                    pass
+
+

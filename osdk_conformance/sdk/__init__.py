@@ -1,0 +1,1 @@
+"""DJI's Onboard-SDK itself under test (`osdkc sdk ...`)."""

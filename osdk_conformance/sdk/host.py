@@ -1,0 +1,512 @@
+"""`osdkc sdk host-test`: DJI's own host stack against `osdkc sim`.
+
+The user points --osdk at a checkout of DJI's Onboard-SDK. Its core and its
+Linux serial driver are compiled, unchanged, together with our small driver
+program (conformance/sdk_host/driver31.cpp, public SDK API only) into a cache
+directory. For each profile the SDK supports, the driver then runs a whole
+session against a simulator on a pseudo-terminal: version, activation with
+app id and key, broadcast frequencies, ~500 broadcast frames that the SDK
+decodes and we compare field by field (IEEE bits for floats) with what the
+simulator sent (`osdkc sim --log-broadcast`), obtain control, encrypted
+movement control that the simulated aircraft must follow, release, frequency
+restore. Each step is reported PASS, FAIL or SKIP.
+
+Exit status: 0 every step passed, 1 a step failed, 2 the tree cannot be
+used (missing file, unsupported SDK version, no compiler, build error).
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import queue
+import re
+import secrets
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.options import positive_int, uint32
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
+from osdk_conformance.sim.simulator import VERSION_ID, VERSION_NAME, spawned
+from osdk_construct.floats import IeeeFloat
+from osdk_construct.payload import osdk_payload
+
+DRIVER_DIR = ROOT / "conformance" / "sdk_host"
+KEY_ENV = "OSDKC_HOST_TEST_KEY"
+BAUD = 230400            # the highest rate the 3.1.x Linux serial driver knows
+DEFAULT_APP_ID = 1010101
+HZ_CODE = {hz: code for code, hz in hz_of_code().items()}   # the set-frequency command's codes
+STEPS = ("version", "activation", "frequencies", "broadcast", "obtain_control", "movement",
+         "release_control", "frequency_restore", "host_frames")
+
+
+# --------------------------------------------------------------------------
+# Which SDK the tree holds
+
+
+@dataclass
+class SdkTree:
+    root: Path
+    version: str
+    profiles: tuple[str, ...]
+    sources: list[Path]
+    includes: list[Path]
+    driver: Path
+    defines: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Layout31:
+    """Where a 3.1.x release keeps the core and the Linux serial driver."""
+
+    inc: str
+    src: str
+    serial: str       # LinuxSerialDevice.h and .cpp
+    serial_inc: str
+    defines: tuple[str, ...] = ()   # what our driver must know about the release
+
+    def required(self) -> list[str]:
+        """What the build and our driver need by name; the core's other
+        sources (SRC/*.cpp) are compiled too."""
+        return ([f"{self.inc}/{h}" for h in ("DJI_Version.h", "DJI_API.h", "DJI_Flight.h", "DJI_Type.h",
+                                             "DJI_Config.h")]
+                + [f"{self.src}/{c}" for c in ("DJI_API.cpp", "DJI_App.cpp", "DJI_Link.cpp", "DJI_Codec.cpp",
+                                               "DJI_Memory.cpp", "DJI_HardDriver.cpp", "DJI_Flight.cpp")]
+                + [f"{self.serial_inc}/LinuxSerialDevice.h", f"{self.serial}/LinuxSerialDevice.cpp"])
+
+
+LAYOUTS_31 = (
+    Layout31("osdk-core/inc", "osdk-core/src", "platform/linux/src", "platform/linux/inc"),   # 3.1.9
+    Layout31("lib/inc", "lib/src", "platform", "platform", ("OSDKC_INIT_SETS_NO_STATUS",)),   # 3.1.8
+)
+NEW_LAYOUT_MARK = "osdk-core/api/inc/dji_version.hpp"   # 3.3 and later (Vehicle API)
+DOC_VERSION = re.compile(rb"@version\s+(\d+(?:\.\d+){1,3})")
+
+
+def _doc_version(files: list[Path]) -> str | None:
+    """The newest `@version` of the file headers: DJI bumps it only in the
+    files a release touched, so the newest one is the release."""
+    found = []
+    for f in files:
+        for m in DOC_VERSION.finditer(f.read_bytes()[:4096]):
+            found.append(tuple(int(x) for x in m.group(1).split(b".")))
+    return ".".join(map(str, max(found))) if found else None
+
+
+def _fw31_versions() -> dict[str, int]:
+    """Profile -> SDK target version, for the profiles of protocol 3.1: the
+    ones driver31.cpp speaks (the 2.3 protocol's version handshake differs)."""
+    return {name: v for name in profile_names()
+            if (v := load_profile(name).sdk_version) >> 16 == 0x0301}
+
+
+def _profiles_of(version_h: str) -> tuple[str, ...]:
+    """The 3.1 profiles whose SDK version DJI_Version.h defines (MAKE_VERSION(a, b, c, d))."""
+    defined = {a << 24 | b << 16 | c << 8 | d for a, b, c, d in
+               ((int(x) for x in m) for m in re.findall(r"MAKE_VERSION\((\d+),\s*(\d+),\s*(\d+),\s*(\d+)\)", version_h))}
+    return tuple(name for name, v in _fw31_versions().items() if v in defined)
+
+
+def detect(root: Path) -> SdkTree:
+    if not root.is_dir():
+        raise UsageError(f"--osdk {root}: no such directory")
+    layout = next((lay for lay in LAYOUTS_31 if (root / lay.inc / "DJI_Version.h").is_file()), None)
+    if layout is None:
+        if (root / NEW_LAYOUT_MARK).is_file():
+            version = _doc_version(sorted((root / "osdk-core/api/inc").glob("*.hpp"))) or "3.3 or later"
+            raise UsageError(f"--osdk {root}: DJI Onboard-SDK {version} (osdk-core/api layout) is not supported "
+                             "by sdk host-test; supported: 3.1.x")
+        marks = " or ".join(f"{lay.inc}/DJI_Version.h" for lay in LAYOUTS_31)
+        raise UsageError(f"--osdk {root}: not a DJI Onboard-SDK checkout: missing {marks} "
+                         f"(3.1.x) and {NEW_LAYOUT_MARK} (later releases)")
+    for rel in layout.required():
+        if not (root / rel).is_file():
+            raise UsageError(f"--osdk {root}: missing {rel}: the 3.1.x host stack cannot be built")
+    includes = [root / layout.inc, root / layout.serial_inc]
+    headers = sorted(p for d in includes for p in d.glob("*.h"))
+    version = _doc_version(headers)
+    if version is None or not version.startswith("3.1."):
+        raise UsageError(f"--osdk {root}: DJI Onboard-SDK {version or 'of unknown version'} is not supported "
+                         "by sdk host-test; supported: 3.1.x")
+    version_h = (root / layout.inc / "DJI_Version.h").read_text(errors="replace")
+    profiles = _profiles_of(version_h)
+    if not profiles:
+        raise UsageError(f"--osdk {root}: {layout.inc}/DJI_Version.h defines no SDK version of a protocol 3.1 "
+                         f"profile ({', '.join(f'{v:#010x}' for v in _fw31_versions().values())})")
+    sources = sorted((root / layout.src).glob("*.cpp")) + [root / layout.serial / "LinuxSerialDevice.cpp"]
+    return SdkTree(root, version, profiles, sources, includes, DRIVER_DIR / "driver31.cpp", layout.defines)
+
+
+# --------------------------------------------------------------------------
+# Building
+
+
+def _compiler() -> str:
+    cxx = os.environ.get("CXX") or "g++"
+    if not shutil.which(cxx):
+        raise UsageError(f"no C++ compiler: {cxx} not found (set CXX)")
+    return cxx
+
+
+def build(tree: SdkTree, out: Path) -> Path:
+    """The driver linked with the tree's core and serial driver; rebuilt only
+    when a source, the compiler or the flags changed."""
+    cxx = _compiler()
+    flags = (["-std=c++11", "-O1", "-pthread", "-w"] + [f"-I{d}" for d in tree.includes]
+             + [f"-D{d}" for d in tree.defines])
+    digest = hashlib.sha256(" ".join([cxx, *flags]).encode())
+    for src in [*tree.sources, tree.driver, *sorted(p for d in tree.includes for p in d.glob("*.h"))]:
+        digest.update(str(src).encode() + b"\0" + src.read_bytes())
+    stamp = digest.hexdigest()
+    exe = out / "driver"
+    stamp_file = out / "driver.stamp"
+    if exe.is_file() and stamp_file.is_file() and stamp_file.read_text().strip() == stamp:
+        return exe
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise UsageError(f"--out {out}: {e.strerror or e}") from None
+    cmd = ["nice", cxx, *flags, *map(str, tree.sources), str(tree.driver), "-o", str(exe)]
+    print(f"osdkc sdk host-test: building the SDK {tree.version} host stack into {out}", file=sys.stderr, flush=True)
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    if proc.returncode:
+        tail = "\n".join(proc.stderr.strip().splitlines()[-15:])
+        raise UsageError(f"building against {tree.root} failed ({cxx} exit {proc.returncode}):\n{tail}")
+    stamp_file.write_text(stamp + "\n")
+    return exe
+
+
+# --------------------------------------------------------------------------
+# One session
+
+
+@dataclass
+class Step:
+    name: str
+    verdict: str          # PASS, FAIL, SKIP
+    detail: str
+
+
+@dataclass
+class Session:
+    steps: dict[str, dict] = field(default_factory=dict)
+    broadcasts: list[dict] = field(default_factory=list)
+    logs: list[str] = field(default_factory=list)
+    done: dict | None = None
+    stderr: str = ""
+    exit_code: int | None = None
+
+
+def _reader(stream, q: queue.Queue) -> None:
+    for line in stream:
+        q.put(line)
+    q.put(None)
+
+
+def _stop_group(proc: subprocess.Popen, grace: float) -> None:
+    """SIGTERM the driver's process group (it releases control and restores
+    the frequencies first), SIGKILL it when it takes longer than `grace`."""
+    if proc.poll() is not None:
+        return
+    try:
+        os.killpg(proc.pid, signal.SIGTERM)
+        proc.wait(timeout=grace)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+    except ProcessLookupError:
+        pass
+
+
+def _pump(lines: queue.Queue, s: Session, sim: subprocess.Popen, until: float) -> bool:
+    """Take the driver's JSON lines into `s` until it closes its output
+    (True) or the time is up (False)."""
+    while True:
+        try:
+            line = lines.get(timeout=max(0.0, until - time.monotonic()))
+        except queue.Empty:
+            return False
+        if line is None:
+            return True
+        try:
+            ev = json.loads(line)
+        except ValueError:
+            s.logs.append(line.rstrip("\n"))
+            continue
+        kind = ev.get("ev")
+        if kind == "bc":
+            s.broadcasts.append(ev)
+        elif kind == "open":
+            sim.send_signal(signal.SIGUSR1)
+        elif kind == "step":
+            s.steps[ev["step"]] = ev
+        elif kind == "log":
+            s.logs.append(ev["text"])
+        elif kind == "done":
+            s.done = ev
+
+
+# The driver needs this long after SIGTERM to release control and restore the
+# frequencies (2 s per unanswered command at worst).
+STOP_GRACE_S = 10.0
+
+
+def drive(exe: Path, sim: subprocess.Popen, port: str, profile: str, app_id: int, frames: int, moves: int,
+          restore: list[int], env: dict, timeout: float) -> Session:
+    """Run the driver against the simulator at `port`; the broadcast starts
+    (SIGUSR1 to the held simulator) once the SDK has the port open. On Ctrl-C
+    the driver is told to stop, hands back control and restores the
+    frequencies, and what it reported is printed before the interrupt goes on."""
+    prof = load_profile(profile)
+    cmd = [str(exe), "--port", port, "--baud", str(BAUD), "--sdk-version", str(prof.sdk_version),
+           "--items", str(len(prof.flag_bits)), "--app-id", str(app_id),
+           "--key-env", KEY_ENV, "--frames", str(frames), "--moves", str(moves),
+           "--restore", ",".join(map(str, restore))]
+    s = Session()
+    # its own process group: the terminal's Ctrl-C reaches us, and we stop it in order
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            start_new_session=True)
+    lines: queue.Queue = queue.Queue()
+    threading.Thread(target=_reader, args=(proc.stdout, lines), daemon=True).start()
+    err: list[str] = []
+    threading.Thread(target=lambda: err.extend(proc.stderr), daemon=True).start()
+    try:
+        if not _pump(lines, s, sim, time.monotonic() + timeout):
+            s.stderr = f"the driver did not finish within {timeout:.0f} s"
+    except KeyboardInterrupt:
+        before = set(s.steps)
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGTERM)
+        _pump(lines, s, sim, time.monotonic() + STOP_GRACE_S)
+        _stop_group(proc, grace=1.0)
+        for name in ("release_control", "frequency_restore"):
+            if name in s.steps and name not in before:
+                ev = s.steps[name]
+                print(f"osdkc sdk host-test: {profile}: interrupted; {name} {'PASS' if ev['ok'] else 'FAIL'}: "
+                      f"{ev['detail']}", file=sys.stderr, flush=True)
+        raise
+    finally:
+        _stop_group(proc, grace=STOP_GRACE_S)
+    s.exit_code = proc.returncode
+    s.stderr = (s.stderr + "\n" + "".join(err)).strip()
+    return s
+
+
+# --------------------------------------------------------------------------
+# Comparing what the SDK decoded with what the simulator sent
+
+
+def _plain(value):
+    if isinstance(value, IeeeFloat):
+        return value.ieee_bits
+    if hasattr(value, "int") and isinstance(value, str):   # a Construct enum value
+        return int(value.int)
+    return int(value)
+
+
+def spec_fields(profile: str, value: bytes) -> tuple[int, dict[str, int]]:
+    """Flag word and every field of the items present, as the spec decodes
+    the value the simulator sent (floats as IEEE bits)."""
+
+    data = osdk_payload(2, 0, False, profile).parse(value).body.data
+    out: dict[str, int] = {}
+
+    def walk(prefix: str, node) -> None:
+        for k, v in node.items():
+            if k.startswith("_"):
+                continue
+            if hasattr(v, "items"):
+                walk(f"{prefix}{k}.", v)
+            elif v is not None:
+                out[prefix + k] = _plain(v)
+
+    for item, v in data.items():
+        if item.startswith("_") or item.startswith("has_") or item == "reserved_flags" or v is None:
+            continue
+        if hasattr(v, "items"):
+            walk(f"{item}.", v)
+        else:
+            out[item] = _plain(v)
+    return int.from_bytes(value[:2], "little"), out
+
+
+@dataclass
+class Comparison:
+    compared: int = 0
+    mismatched_frames: int = 0
+    mismatches: list[str] = field(default_factory=list)   # the first few, for the report
+    unknown: int = 0          # SEQs the SDK reported that the simulator never sent
+    lost: int = 0             # frames sent before the SDK's last one that it never reported
+    fields: int = 0
+    items: set = field(default_factory=set)
+
+
+def compare(profile: str, sent_log: Path, decoded: list[dict]) -> Comparison:
+    sent: dict[int, bytes] = {}
+    if sent_log.is_file():
+        for line in sent_log.read_text().splitlines():
+            rec = json.loads(line)
+            sent[rec["seq"]] = bytes.fromhex(rec["value"])
+    c = Comparison()
+    seen: set[int] = set()
+    for ev in decoded:
+        seq = ev["seq"]
+        seen.add(seq)
+        if seq not in sent:
+            c.unknown += 1
+            continue
+        flags, want = spec_fields(profile, sent[seq])
+        got = ev["f"]
+        bad = [] if ev["flags"] == flags else [f"flags: sent 0x{flags:04x}, SDK 0x{ev['flags']:04x}"]
+        for name, v in want.items():
+            if got.get(name) != v:
+                bad.append(f"{name}: sent {v}, SDK {got.get(name, 'nothing')}")
+        c.compared += 1
+        c.fields += len(want)
+        c.items.update(n.split(".")[0] for n in want)
+        if bad:
+            c.mismatched_frames += 1
+            if len(c.mismatches) < 5:
+                c.mismatches.append(f"SEQ {seq}: " + "; ".join(bad[:4]))
+    if seen:
+        c.lost = sum(1 for seq in sent if seq <= max(seen) and seq not in seen)
+    return c
+
+
+# --------------------------------------------------------------------------
+# Verdicts
+
+
+def _why_stopped(s: Session) -> str:
+    opened = s.steps.get("open")
+    if opened and not opened["ok"]:
+        return opened["detail"]
+    if s.stderr:
+        return s.stderr.splitlines()[-1]
+    if s.exit_code is not None and s.exit_code < 0:
+        try:
+            name = signal.Signals(-s.exit_code).name
+        except ValueError:
+            name = "unknown"
+        return f"the driver was killed by signal {-s.exit_code} ({name})"
+    return f"the driver ended with status {s.exit_code}"
+
+
+def _verdicts(profile: str, s: Session, cmp: Comparison, stats: dict, frames: int) -> list[Step]:
+    out: list[Step] = []
+    blocked = "not reached: " + _why_stopped(s)
+    refused = "obtain_control" in s.steps and not s.steps["obtain_control"]["ok"]
+    for name in STEPS:
+        ev = s.steps.get(name)
+        if name == "host_frames":
+            rejected = stats.get("frames_rejected")
+            garbage = stats.get("rx_bytes_discarded", {}).get("not_a_frame")
+            ok = rejected == 0 and garbage == 0 and stats.get("commands_received", 0) > 0
+            out.append(Step(name, "PASS" if ok else "FAIL",
+                            f"simulator heard {stats.get('commands_received')} commands from the SDK, "
+                            f"{rejected} frames rejected, {garbage} bytes outside frames"))
+            continue
+        if ev is None:
+            if name in ("movement", "release_control") and refused:
+                out.append(Step(name, "SKIP", "control was not obtained"))
+            else:
+                out.append(Step(name, "FAIL", blocked))
+            continue
+        ok, detail = ev["ok"], ev["detail"]
+        if name == "version":
+            got_id = next((t.split("version ID = ", 1)[1] for t in s.logs if "version ID = " in t), None)
+            got_name = next((t.split("version name = ", 1)[1] for t in s.logs if "version name = " in t), None)
+            want_name = VERSION_NAME[profile].decode()
+            want_id = VERSION_ID.decode()
+            ok = ok and got_id == want_id and got_name == want_name
+            detail = (f"SDK read ID {got_id!r} (sent {want_id!r}), name {got_name!r} (sent {want_name!r}); "
+                      f"{detail}")
+        elif name == "broadcast":
+            ok = ok and cmp.compared >= frames and cmp.mismatched_frames == 0 and cmp.unknown == 0 and cmp.lost == 0
+            detail = (f"{cmp.compared} frames compared field by field ({cmp.fields} fields; items "
+                      f"{', '.join(sorted(cmp.items))}): {cmp.mismatched_frames} with a mismatch, "
+                      f"{cmp.lost} lost, {cmp.unknown} unknown; driver: {detail}")
+            if cmp.mismatches:
+                detail += "; first: " + " | ".join(cmp.mismatches)
+        elif name == "movement":
+            sent = ev.get("sent", 0)
+            heard, enc = stats.get("movement_commands"), stats.get("movement_commands_encrypted")
+            ok = ok and heard == sent and enc == sent
+            detail = f"{detail}; simulator received {heard}, {enc} of them encrypted"
+        out.append(Step(name, "PASS" if ok else "FAIL", detail))
+    return out
+
+
+def run_profile(exe: Path, profile: str, args: argparse.Namespace, work: Path) -> list[Step]:
+    prof = load_profile(profile)
+    restore = [HZ_CODE[prof.default_rates_hz[item]] for item in prof.flag_bits]
+    env = dict(os.environ, **{KEY_ENV: secrets.token_hex(32)})
+    log, stats_file = work / f"{profile}.broadcast.jsonl", work / f"{profile}.sim-stats.json"
+    sim_args = ["--profile", profile, "--hold", "--app-id", str(args.app_id), "--key-env", KEY_ENV,
+                "--baud", str(BAUD), "--log-broadcast", str(log), "--stats", str(stats_file)]
+    with spawned(*sim_args, env=env, new_session=True) as (port, sim):
+        session = drive(exe, sim, port, profile, args.app_id, args.frames, args.moves, restore, env,
+                        timeout=args.frames / 50 * 3 + args.moves / 50 * 3 + 30)
+    (work / f"{profile}.driver.jsonl").write_text(
+        "".join(json.dumps(e) + "\n" for e in [*session.steps.values(), *session.broadcasts])
+        + "".join(json.dumps({"ev": "log", "text": t}) + "\n" for t in session.logs))
+    stats = json.loads(stats_file.read_text()) if stats_file.is_file() else {}
+    return _verdicts(profile, session, compare(profile, log, session.broadcasts), stats, args.frames)
+
+
+# --------------------------------------------------------------------------
+# Command line
+
+
+def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    ap.add_argument("--osdk", metavar="DIR", default=os.environ.get("OSDK_SRC"),
+                    help="a checkout of DJI's Onboard-SDK (3.1.x); default $OSDK_SRC")
+    ap.add_argument("--profile", action="append", choices=profiles,
+                    help="profile to run (repeatable; default every profile the SDK supports)")
+    ap.add_argument("--out", metavar="DIR", help="build directory (default ~/.cache/osdkc/sdk-host/VERSION)")
+    ap.add_argument("--log-dir", metavar="DIR",
+                    help="keep the simulator's broadcast log, its counters and the driver's output here")
+    ap.add_argument("--frames", type=positive_int, default=500, help="broadcast frames to compare at 50 Hz (default 500)")
+    ap.add_argument("--moves", type=positive_int, default=150, help="movement control commands to send (default 150)")
+    ap.add_argument("--app-id", type=uint32, default=DEFAULT_APP_ID, help="app id to activate with")
+
+
+def _print_steps(profile: str, steps: list[Step]) -> None:
+    print(profile)
+    for st in steps:
+        print(f"  {st.verdict:4}  {st.name:18} {st.detail}")
+    sys.stdout.flush()
+
+
+def run_host_test(args: argparse.Namespace) -> int:
+    if not args.osdk:
+        raise UsageError("sdk host-test needs --osdk DIR (a checkout of DJI's Onboard-SDK) or OSDK_SRC")
+    tree = detect(Path(args.osdk).expanduser().resolve())
+    wanted = tuple(dict.fromkeys(args.profile)) if args.profile else tree.profiles
+    for p in wanted:
+        if p not in tree.profiles:
+            raise UsageError(f"--profile {p}: the SDK {tree.version} host test supports {', '.join(tree.profiles)}")
+    out = Path(args.out).expanduser() if args.out else Path.home() / ".cache" / "osdkc" / "sdk-host" / tree.version
+    exe = build(tree, out)
+    print(f"osdkc sdk host-test: DJI Onboard-SDK {tree.version} from {tree.root}, driver {exe}")
+    failed = total = 0
+    with tempfile.TemporaryDirectory(prefix="osdkc-host-") as tmp:
+        work = Path(args.log_dir) if args.log_dir else Path(tmp)
+        work.mkdir(parents=True, exist_ok=True)
+        for profile in wanted:
+            steps = run_profile(exe, profile, args, work)
+            _print_steps(profile, steps)
+            total += len(steps)
+            failed += sum(st.verdict == "FAIL" for st in steps)
+    print(f"{len(wanted)} profile(s), {total} steps: {total - failed} passed or skipped, {failed} failed")
+    return 1 if failed else 0

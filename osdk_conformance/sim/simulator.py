@@ -1,0 +1,929 @@
+"""`osdkc sim`: a simulated flight controller on a pseudo-terminal or TCP port.
+
+It speaks the device side of the OPEN protocol that the acceptance suite
+(`osdkc device`) checks: flight data broadcast in a chosen wire profile at
+the rates the frequency command sets (defaults from spec/rules.yaml),
+answers to version query, activation, set frequency, obtain/release control
+(the first request answers "in progress", the repeat succeeds; obtaining
+needs the RC mode switch in F) and movement control, which drives a small
+motion model so that commanded attitude, velocity, yaw, yaw rate, position
+offsets, height and thrust show up in the broadcast state.
+
+Every frame it sends is built with the Construct spec (osdk_construct).
+Fault injection (per broadcast frame, reproducible with --seed): noise
+bytes, bit flips, dropped bytes, truncated frames, bad CRCs, duplicated
+frames, jitter, rate drift, implausible values, another profile's layout,
+a stalled stream, an unplugged-and-back port, a baud rate mismatch.
+"""
+from __future__ import annotations
+
+import argparse
+import contextlib
+import errno
+import fcntl
+import json
+import math
+import os
+import random
+import select
+import signal
+import socket
+import struct
+import subprocess
+import sys
+import termios
+import time
+import tty
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from osdk_construct.payload import VERSION_ID_SIZE, osdk_payload, version_ack_value
+
+from osdk_conformance.core.deframe import Deframer, Frame
+from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.options import (baud_rate, non_negative_float, non_negative_int, probability, rate_change,
+                                           tcp_port, uint32)
+from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
+from osdk_conformance.core.wire import encode, key_option, open_frame
+from osdk_conformance.reference.values import broadcast_data, cut
+
+R_EARTH = 6378137.0
+G = 9.80665
+HOME_LAT, HOME_LON = math.radians(22.5431), math.radians(113.9425)
+HOME_ALT = 52.0
+COMMAND_TIMEOUT = 0.5   # s without movement control: hover
+TAU = 0.25              # s, first-order lag of every controlled quantity
+RC_MODE = {"P": -8000, "A": 0, "F": 8000}
+FAULTS = ("noise", "bitflip", "drop_bytes", "truncate", "bad_crc", "duplicate")
+VERSION_ID = b"SIM-0001"
+"""What the simulator puts in the FW 3.1 version ACK's 11-byte version ID (ERRATA E30)."""
+
+
+class _VersionNames(Mapping):
+    """Profile id -> the version name the simulator answers a version query
+    with: the profile's first aircraft and its SDK version, one byte a
+    number (`SIM-M100-03.01.10.00`), derived from rules.yaml."""
+
+    def __getitem__(self, name: str) -> bytes:
+        if name not in profile_names():
+            raise KeyError(name)
+        prof = load_profile(name)
+        version = ".".join(f"{b:02d}" for b in prof.sdk_version.to_bytes(4, "big"))
+        return f"SIM-{prof.aircraft[0]}-{version}".encode()
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(profile_names())
+
+    def __len__(self) -> int:
+        return len(profile_names())
+
+
+VERSION_NAME: Mapping[str, bytes] = _VersionNames()
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _clamp(v: float, lim: float) -> float:
+    return max(-lim, min(lim, v))
+
+
+def euler_to_quaternion(roll: float, pitch: float, yaw: float) -> tuple[float, float, float, float]:
+    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
+    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
+    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
+    return (cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+            cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy)
+
+
+def quaternion_to_euler(q0: float, q1: float, q2: float, q3: float) -> tuple[float, float, float]:
+    roll = math.atan2(2 * (q0 * q1 + q2 * q3), 1 - 2 * (q1 * q1 + q2 * q2))
+    pitch = math.asin(max(-1.0, min(1.0, 2 * (q0 * q2 - q3 * q1))))
+    yaw = math.atan2(2 * (q0 * q3 + q1 * q2), 1 - 2 * (q2 * q2 + q3 * q3))
+    return roll, pitch, yaw
+
+
+@dataclass
+class Vehicle:
+    """Point-mass multirotor in the air, NEU ground frame, first-order lags."""
+
+    n: float = 0.0
+    e: float = 0.0
+    height: float = 10.0
+    vn: float = 0.0
+    ve: float = 0.0
+    vu: float = 0.0
+    roll: float = 0.0
+    pitch: float = 0.0
+    yaw: float = 0.0
+    rates: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    accel: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    command: dict | None = None
+    command_t: float = -1e9
+    hold_yaw: float = 0.0
+
+    def set_command(self, mode: int, x: float, y: float, z: float, yaw: float, now: float) -> None:
+        hl, vl, yl, frame = mode >> 6 & 3, mode >> 4 & 3, mode >> 3 & 1, mode >> 1 & 3
+        cmd = {"h": hl, "v": vl, "y": yl, "body": frame == 1, "x": x, "yv": y, "z": z, "yaw": yaw}
+        if hl == 2:  # position offset: target = here + offset (rotated when in the body frame)
+            dn, de = self._to_ground(x, y, cmd["body"])
+            cmd["target"] = (self.n + dn, self.e + de)
+        self.command, self.command_t = cmd, now
+
+    def active_command(self, now: float) -> dict | None:
+        return self.command if self.command and now - self.command_t <= COMMAND_TIMEOUT else None
+
+    def _to_ground(self, x: float, y: float, body: bool) -> tuple[float, float]:
+        if not body:
+            return x, y
+        c, s = math.cos(self.yaw), math.sin(self.yaw)
+        return c * x - s * y, s * x + c * y
+
+    def step(self, dt: float, now: float) -> None:
+        if dt <= 0:
+            return
+        a = 1 - math.exp(-dt / TAU)
+        cmd = self.active_command(now)
+        roll_t = pitch_t = 0.0
+        vn_t = ve_t = vu_t = 0.0
+        yaw_rate_t = None
+        if cmd is None:
+            yaw_t = self.hold_yaw
+        else:
+            if cmd["h"] == 0:  # tilt angles (deg): attitude follows, velocity builds up from the tilt
+                roll_t, pitch_t = math.radians(_clamp(cmd["x"], 30)), math.radians(_clamp(cmd["yv"], 30))
+                fwd, right = -G * math.tan(pitch_t) * 0.5, G * math.tan(roll_t) * 0.5
+                vn_t, ve_t = self._to_ground(fwd, right, True)
+            elif cmd["h"] == 1:
+                vn_t, ve_t = self._to_ground(_clamp(cmd["x"], 10), _clamp(cmd["yv"], 10), cmd["body"])
+            elif cmd["h"] == 2:
+                tn, te = cmd["target"]
+                vn_t, ve_t = _clamp((tn - self.n) * 1.5, 10), _clamp((te - self.e) * 1.5, 10)
+            if cmd["v"] == 0:
+                vu_t = _clamp(cmd["z"], 4)
+            elif cmd["v"] == 1:
+                vu_t = _clamp((cmd["z"] - self.height) * 1.5, 4)
+            elif cmd["v"] == 2:
+                vu_t = _clamp((cmd["z"] - 40.0) / 10.0, 4)
+            if cmd["y"] == 0:
+                yaw_t = math.radians(cmd["yaw"])
+                self.hold_yaw = yaw_t
+            else:
+                yaw_rate_t = math.radians(_clamp(cmd["yaw"], 100))
+        if cmd is None or cmd["h"] != 0:
+            # cosmetic tilt from the velocity error, small enough not to matter
+            c, s = math.cos(self.yaw), math.sin(self.yaw)
+            en, ee = vn_t - self.vn, ve_t - self.ve
+            pitch_t = _clamp(-(c * en + s * ee) * 0.02, 0.2)
+            roll_t = _clamp((-s * en + c * ee) * 0.02, 0.2)
+        if yaw_rate_t is None:
+            yaw_rate_t = _clamp(_wrap(yaw_t - self.yaw) / TAU, math.radians(150))
+        else:
+            self.hold_yaw = self.yaw
+        old_v = (self.vn, self.ve, self.vu)
+        old_att = (self.roll, self.pitch)
+        self.vn += (vn_t - self.vn) * a
+        self.ve += (ve_t - self.ve) * a
+        self.vu += (vu_t - self.vu) * a
+        if self.height <= 0 and self.vu < 0:
+            self.vu = 0.0
+        self.n += self.vn * dt
+        self.e += self.ve * dt
+        self.height = max(0.0, self.height + self.vu * dt)
+        self.roll += (roll_t - self.roll) * a
+        self.pitch += (pitch_t - self.pitch) * a
+        yaw_rate = self.rates[2] + (yaw_rate_t - self.rates[2]) * min(1.0, a * 3)
+        self.yaw = _wrap(self.yaw + yaw_rate * dt)
+        self.rates = ((self.roll - old_att[0]) / dt, (self.pitch - old_att[1]) / dt, yaw_rate)
+        self.accel = ((self.vn - old_v[0]) / dt, (self.ve - old_v[1]) / dt, (self.vu - old_v[2]) / dt)
+
+    def lat_lon(self) -> tuple[float, float]:
+        lat = HOME_LAT + self.n / R_EARTH
+        return lat, HOME_LON + self.e / (R_EARTH * math.cos(HOME_LAT))
+
+
+# --------------------------------------------------------------------------
+# Transports
+
+
+class PtyTransport:
+    """A pseudo-terminal; the slave side is what a client opens. With `link`,
+    a symlink names the slave, so an unplugged-and-back port keeps its name."""
+
+    def __init__(self, link: str | None = None) -> None:
+        self.link = link
+        self.master = self.slave = -1
+        self._open()
+
+    def _open(self) -> None:
+        self.master, self.slave = os.openpty()
+        tty.setraw(self.slave)   # no echo, no line discipline, before anyone opens it
+        os.set_blocking(self.master, False)
+        self.path = os.ttyname(self.slave)
+        if self.link:
+            tmp = f"{self.link}.tmp{os.getpid()}"
+            try:
+                os.unlink(tmp)
+            except FileNotFoundError:
+                pass
+            os.symlink(self.path, tmp)
+            os.replace(tmp, self.link)
+
+    @property
+    def url(self) -> str:
+        return self.link or self.path
+
+    def read_fds(self) -> list[int]:
+        return [self.master] if self.master >= 0 else []
+
+    def connected(self) -> bool:
+        return self.master >= 0
+
+    def on_readable(self, fd: int) -> bytes:
+        try:
+            return os.read(self.master, 65536)
+        except BlockingIOError:
+            return b""
+        except OSError as e:
+            if e.errno == errno.EIO:   # no client has the slave open: nothing to read
+                return b""
+            raise
+
+    def write(self, data: bytes) -> int:
+        if self.master < 0:
+            return 0
+        try:
+            return os.write(self.master, data)
+        except BlockingIOError:
+            return 0
+        except OSError as e:
+            if e.errno == errno.EIO:
+                return 0
+            raise
+
+    def pending_input(self) -> int:
+        """Bytes written by us and not yet read by the client."""
+        if self.slave < 0:
+            return 0
+        try:
+            return struct.unpack("i", fcntl.ioctl(self.slave, termios.FIONREAD, b"\0\0\0\0"))[0]
+        except OSError:
+            return 0
+
+    def speed(self) -> int | None:
+        try:
+            return termios.tcgetattr(self.slave)[4]
+        except (OSError, termios.error):
+            return None
+
+    def unplug(self) -> None:
+        for fd in (self.master, self.slave):
+            if fd >= 0:
+                os.close(fd)
+        self.master = self.slave = -1
+        if self.link:
+            try:
+                os.unlink(self.link)
+            except FileNotFoundError:
+                pass
+
+    def replug(self) -> None:
+        self._open()
+
+    def close(self) -> None:
+        self.unplug()
+
+
+class TcpTransport:
+    """A TCP listener for pyserial's socket:// URLs; one client at a time."""
+
+    def __init__(self, host: str, port: int) -> None:
+        self.host = host
+        self.port = port
+        self.client: socket.socket | None = None
+        self.listener: socket.socket | None = None
+        self._listen()
+
+    def _listen(self) -> None:
+        s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        s.bind((self.host, self.port))
+        s.listen(1)
+        s.setblocking(False)
+        self.port = s.getsockname()[1]
+        self.listener = s
+
+    @property
+    def url(self) -> str:
+        return f"socket://{self.host}:{self.port}"
+
+    def read_fds(self) -> list[int]:
+        fds = [self.listener.fileno()] if self.listener else []
+        if self.client:
+            fds.append(self.client.fileno())
+        return fds
+
+    def connected(self) -> bool:
+        return self.client is not None
+
+    def on_readable(self, fd: int) -> bytes:
+        if self.listener and fd == self.listener.fileno():
+            try:
+                conn, _ = self.listener.accept()
+            except BlockingIOError:
+                return b""
+            if self.client:
+                conn.close()   # one client at a time, like a serial port
+            else:
+                conn.setblocking(False)
+                conn.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+                self.client = conn
+            return b""
+        if self.client is None:
+            return b""
+        try:
+            data = self.client.recv(65536)
+        except BlockingIOError:
+            return b""
+        except OSError:
+            data = b""
+        if not data:
+            self.client.close()
+            self.client = None
+        return data
+
+    def write(self, data: bytes) -> int:
+        if self.client is None:
+            return 0
+        try:
+            return self.client.send(data)
+        except BlockingIOError:
+            return 0
+        except OSError:
+            self.client.close()
+            self.client = None
+            return 0
+
+    def pending_input(self) -> int:
+        return 0
+
+    def speed(self) -> int | None:
+        return None
+
+    def unplug(self) -> None:
+        if self.client:
+            self.client.close()
+            self.client = None
+        if self.listener:
+            self.listener.close()
+            self.listener = None
+
+    def replug(self) -> None:
+        self._listen()
+
+    def close(self) -> None:
+        self.unplug()
+
+
+# --------------------------------------------------------------------------
+# The flight controller
+
+
+@dataclass
+class SimConfig:
+    profile: str = "a3-fw3.1"
+    seed: int | None = None
+    app_id: int | None = None
+    key: bytes | None = None
+    encrypt: bool = False
+    rc_mode: str = "F"
+    faults: dict[str, float] = field(default_factory=dict)
+    jitter_ms: float = 0.0
+    rate_drift: float = 0.0
+    implausible: bool = False
+    wrong_profile: str | None = None
+    stall_at: float | None = None
+    exit_after: float | None = None
+    unplug_at: float | None = None
+    unplug_for: float = 1.0
+    baud: int | None = None
+    hold: bool = False
+    rates: dict[str, int] | None = None
+    log_broadcast: str | None = None   # JSON lines: SEQ and value (before fault injection) of every broadcast sent
+
+
+# A pty counts only the bytes that reached the client's side; bytes the
+# kernel is still moving there do not show, and closing the port loses
+# them. So the queue must stay empty for a moment before the stop, and a
+# client that reads nothing is given up only after a pause longer than a
+# loaded machine leaves a reader unscheduled (0.2 s lost frames at the end
+# of soak runs).
+DRAIN_SETTLE_S = 0.05
+DRAIN_STUCK_S = 1.0
+
+
+class Simulator:
+    def __init__(self, cfg: SimConfig, transport) -> None:
+        self.cfg = cfg
+        self.t = transport
+        self.rng = random.Random(cfg.seed)
+        self.profile = load_profile(cfg.profile)
+        self.wire_profile = load_profile(cfg.wrong_profile or cfg.profile)
+        self._payload = osdk_payload
+        self.rates = dict(self.profile.default_rates_hz)
+        if cfg.rates:
+            self.rates.update(cfg.rates)
+        self.vehicle = Vehicle()
+        self.deframer = Deframer()
+        self.activated = False
+        self.control = "rc"            # rc | onboard
+        self.pending: str | None = None  # "obtain" | "release": the first request was answered "in progress"
+        self.onboard_requested = False
+        self.seq = 0
+        self.outbuf = bytearray()
+        self.stats = {"frames_sent": 0, "broadcast_frames": 0, "acks_sent": 0, "bytes_sent": 0,
+                      "frames_dropped_tx_full": 0, "commands_received": 0, "frames_rejected": 0,
+                      "movement_commands": 0, "movement_commands_encrypted": 0,
+                      "faults": {f: 0 for f in FAULTS},
+                      # Every byte the host sent is accounted for: heard as part of a frame, or
+                      # discarded for a reason (not_a_frame is settled at exit, see rx_accounting).
+                      "rx_bytes": 0, "rx_bytes_discarded": {"baud_mismatch": 0, "stalled": 0, "not_a_frame": 0}}
+        self._rx_frame_bytes = 0
+        self.running = True
+        self.broadcasting = not cfg.hold
+        self.start = time.monotonic()
+        self.last_step = self.start
+        self.frame_index = 0
+        self.next_frame = self.start
+        self.send_at = self.start
+        self.battery = 90.0
+        self.baud_ok = True
+        self.unplugged_until: float | None = None
+        self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
+        self._current_raw = b""
+        self.broadcast_log = open(cfg.log_broadcast, "w", buffering=1) if cfg.log_broadcast else None
+
+    # ---- broadcast -------------------------------------------------------
+
+    def frame_rate(self) -> float:
+        return max(self.rates.values(), default=0)
+
+    def _due_items(self) -> list[str]:
+        base = self.frame_rate()
+        out = []
+        for item in self.wire_profile.flag_bits:
+            hz = self.rates.get(item, 0)
+            if hz > 0 and self.frame_index % max(1, round(base / hz)) == 0:
+                out.append(item)
+        return out
+
+    def broadcast_value(self, items: list[str], now: float) -> bytes:
+        """The broadcast payload carrying `items` at time `now`. The state is
+        modelled once, each item in its fullest form; the wire profile's
+        layout keeps the fields its variants have (reference.values), and an
+        item not modelled here goes out at rest."""
+        p = self.wire_profile
+        v = self.vehicle
+        bad = self.cfg.implausible
+        elapsed = now - self.start
+        lat, lon = v.lat_lon()
+        q = euler_to_quaternion(v.roll, v.pitch, v.yaw)
+        if bad:
+            q = tuple(2 * c for c in q)
+        ticks = int(elapsed * 400) & 0xFFFFFFFF
+        if bad:
+            ticks = (0x7FFFFFFF - ticks * 3) & 0xFFFFFFFF
+        in_control = self.control == "onboard"
+        cmd = v.active_command(now) if in_control else None
+        mode_value = 0
+        if cmd and cmd["h"] < 3 and cmd["v"] < 3:
+            mode_value = 1 + 6 * cmd["v"] + 2 * cmd["h"] + cmd["y"]
+        amsl = HOME_ALT + v.height
+        date, tod = 20240601, 120000 + int(elapsed) % 60
+        model = {
+            "time_stamp": {"time": ticks, "nano_time": time.monotonic_ns() & 0xFFFFFFFF, "sync_flag": 0},
+            "quaternion": dict(zip(("q0", "q1", "q2", "q3"), q)),
+            "acceleration": dict(zip("xyz", v.accel)),
+            "velocity": {"x": v.vn, "y": v.ve, "z": v.vu, "data_valid": True, "sensor_id": 0, "reserved": 0},
+            "angular_rate": dict(zip("xyz", v.rates)),
+            "position": {"latitude": lat, "longitude": lon, "altitude": amsl, "height": v.height,
+                         "gps_health": 9 if bad else 5},
+            "gps_detail": {"date": date, "time": tod, "longitude": round(math.degrees(lon) * 1e7),
+                           "latitude": round(math.degrees(lat) * 1e7), "height_msl": round(amsl * 1000),
+                           "vel_n": v.vn * 100, "vel_e": v.ve * 100, "vel_d": -v.vu * 100},
+            "rtk_detail": {"date": date, "time": tod, "longitude": math.degrees(lon), "latitude": math.degrees(lat),
+                           "height_msl": amsl, "vel_n": v.vn * 100, "vel_e": v.ve * 100, "vel_d": -v.vu * 100,
+                           "yaw": round(math.degrees(v.yaw)), "position_flag": 50, "yaw_flag": 1},
+            "magnetometer": {"x": round(300 * math.cos(v.yaw)), "y": round(-300 * math.sin(v.yaw)), "z": -420},
+            "rc": {"roll": 20000 if bad else 0, "pitch": 0, "yaw": 0, "throttle": 0,
+                   "mode": 1234 if bad else RC_MODE[self.cfg.rc_mode], "gear": -4545},
+            "gimbal": {"roll": 0.0, "pitch": -30.0, "yaw": math.degrees(v.yaw),
+                       "limit": {"pitch_limit": False, "roll_limit": False, "yaw_limit": False, "reserved": 0}},
+            "flight_status": 77 if bad else (2 if self.profile.flight_status_enum == "new" else 3),
+            "battery": 150 if bad else int(self.battery),
+            "control_info": {"cur_mov_control_mode": mode_value,
+                             "control_device": 5 if bad else (2 if in_control else 0),
+                             "onboard_requested": self.onboard_requested, "virtual_rc": False, "reserved": 0},
+        }
+        data = broadcast_data(p.name, items, model)
+        return self._payload(2, 0, False, p.name).build({"body": {"data": data}})
+
+    def _next_seq(self) -> int:
+        s = self.seq
+        self.seq = (self.seq + 1) & 0xFFFF
+        return s
+
+    def emit_broadcast(self, now: float) -> None:
+        items = self._due_items()
+        self.frame_index += 1
+        if not items:
+            return
+        value = self.broadcast_value(items, now)
+        seq = self._next_seq()
+        frame = encode(cmd_set=2, cmd_id=0, value=value, seq=seq,
+                       key=self.cfg.key if self.cfg.encrypt else None)
+        self.stats["broadcast_frames"] += 1
+        queued = self.stats["frames_sent"]
+        self._send(self._inject(frame), frames=1)
+        if self.broadcast_log and self.stats["frames_sent"] > queued:
+            self.broadcast_log.write(json.dumps({"seq": seq, "value": value.hex()}) + "\n")
+
+    def _inject(self, frame: bytes) -> bytes:
+        f, rng = self.cfg.faults, self.rng
+        out = bytearray(frame)
+        if f.get("bitflip") and rng.random() < f["bitflip"]:
+            bit = rng.randrange(len(out) * 8)
+            out[bit // 8] ^= 1 << (bit % 8)
+            self.stats["faults"]["bitflip"] += 1
+        if f.get("bad_crc") and rng.random() < f["bad_crc"] and len(out) > 12:
+            out[-1] ^= rng.randrange(1, 256)
+            self.stats["faults"]["bad_crc"] += 1
+        if f.get("drop_bytes") and rng.random() < f["drop_bytes"]:
+            del out[rng.randrange(len(out))]
+            self.stats["faults"]["drop_bytes"] += 1
+        if f.get("truncate") and rng.random() < f["truncate"] and len(out) > 1:
+            del out[rng.randrange(1, len(out)):]
+            self.stats["faults"]["truncate"] += 1
+        if f.get("noise") and rng.random() < f["noise"]:
+            out[0:0] = rng.randbytes(rng.randrange(1, 17))
+            self.stats["faults"]["noise"] += 1
+        if f.get("duplicate") and rng.random() < f["duplicate"]:
+            out += frame
+            self.stats["faults"]["duplicate"] += 1
+        return bytes(out)
+
+    def _send(self, data: bytes, frames: int) -> None:
+        if not self.t.connected() or self.unplugged_until is not None:
+            return
+        if len(self.outbuf) + len(data) > 8192:   # nobody reads: a UART goes on and the bytes are lost
+            self.stats["frames_dropped_tx_full"] += frames
+            return
+        if not self.baud_ok:
+            data = bytes((b * 37 + 11) & 0xFF for b in data)   # what a receiver at the wrong speed sees
+        self.outbuf += data
+        self.stats["frames_sent"] += frames
+        self.stats["bytes_sent"] += len(data)
+        self._flush()
+
+    def _flush(self) -> None:
+        while self.outbuf:
+            n = self.t.write(bytes(self.outbuf))
+            if n <= 0:
+                break
+            del self.outbuf[:n]
+
+    # ---- commands --------------------------------------------------------
+
+    def on_bytes(self, data: bytes, now: float) -> None:
+        for ev in self.deframer.feed(data):
+            if isinstance(ev, Frame):
+                self._rx_frame_bytes += len(ev.raw)
+                self.on_frame(ev.raw, now)
+            else:
+                self.stats["frames_rejected"] += 1
+
+    def on_received(self, data: bytes, now: float, stalled: bool) -> None:
+        """Bytes read from the host. The line speed is looked at now, when
+        they arrive: a UART hears a host that writes right after setting its
+        speed, so a check on a timer would lose the first command."""
+        discarded = self.stats["rx_bytes_discarded"]
+        self.stats["rx_bytes"] += len(data)
+        if stalled:
+            discarded["stalled"] += len(data)
+            return
+        self._check_speed()
+        if not self.baud_ok:
+            discarded["baud_mismatch"] += len(data)
+            return
+        self.on_bytes(data, now)
+
+    def rx_accounting(self) -> dict:
+        """The receive counters at the end: bytes in no frame (garbage,
+        rejected headers, a frame cut off when the run ended) are not_a_frame."""
+        discarded = dict(self.stats["rx_bytes_discarded"])
+        discarded["not_a_frame"] = (self.stats["rx_bytes"] - discarded["baud_mismatch"] - discarded["stalled"]
+                                    - self._rx_frame_bytes)
+        return {"rx_bytes": self.stats["rx_bytes"], "rx_bytes_discarded": discarded}
+
+    def _ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, body: dict) -> None:
+        if session == 0:
+            return
+        value = self._payload(cmd_set, cmd_id, True, self.profile.name).build({"body": body})
+        frame = encode(value=value, is_ack=True, session=session, seq=seq,
+                       key=self.cfg.key if self.cfg.encrypt else None)
+        self.stats["acks_sent"] += 1
+        self.last_ack[session] = (seq, self._current_raw, frame)
+        self._send(frame, frames=1)
+
+    def on_frame(self, raw: bytes, now: float) -> None:
+        op = open_frame(raw, self.cfg.key)
+        if op.problem or op.is_ack or op.cmd_set is None:
+            return
+        self._current_raw = raw
+        self.stats["commands_received"] += 1
+        if op.cmd_set == 0x01 and op.cmd_id == 0x03:
+            self.stats["movement_commands"] += 1
+            self.stats["movement_commands_encrypted"] += op.encrypted
+        if op.session > 0:
+            cached = self.last_ack.get(op.session)
+            if cached and cached[0] == op.seq and cached[1] == raw:
+                # a retransmission (its ACK was lost or late): answer again, do not execute twice
+                self.stats["acks_sent"] += 1
+                self._send(cached[2], frames=1)
+                return
+        key = (op.cmd_set, op.cmd_id)
+        try:
+            req = self._payload(op.cmd_set, op.cmd_id, False, self.profile.name).parse(op.value).body
+        except Exception:
+            return   # a value that does not decode gets no answer, as from a real FC
+        if key == (0x00, 0x00):
+            # every field the ACK has in some profile; the profile's layout keeps its own (ERRATA E30)
+            self._ack(0, 0, op.session, op.seq, cut(version_ack_value(self.profile.name), {
+                "ack_code": "activated" if self.activated else "not_activated", "version_crc": 0x5A17C0DE,
+                "version_id": VERSION_ID.ljust(VERSION_ID_SIZE, b"\0"),
+                "version_name": VERSION_NAME[self.profile.name].ljust(32, b"\0")}))
+        elif key == (0x00, 0x01):
+            if self.cfg.app_id is not None and req.app_id != self.cfg.app_id:
+                code = "invalid_parameters"
+            elif req.sdk_version != self.profile.sdk_version:
+                code = "wrong_sdk_version"
+            else:
+                code = "success"
+                self.activated = True
+            self._ack(0, 1, op.session, op.seq, {"ack_code": code})
+        elif key == (0x00, 0x10):
+            codes = [int(c) for c in req.codes]
+            items = self.profile.flag_bits
+            if any(c > 5 for c in codes[:len(items)]):
+                self._ack(0, 0x10, op.session, op.seq, {"ack_code": "parameter_error"})
+                return
+            hz = hz_of_code()
+            for item, c in zip(items, codes):
+                if c != 5:
+                    self.rates[item] = hz[c]
+            self.frame_index = 0
+            self._ack(0, 0x10, op.session, op.seq, {"ack_code": "success"})
+        elif key == (0x01, 0x00):
+            self._ack(1, 0, op.session, op.seq, {"ack_code": self._control_request(int(req.request))})
+        elif key == (0x01, 0x03):
+            if self.control == "onboard":
+                self.vehicle.set_command(op.value[0], float(req.x), float(req.y), float(req.z), float(req.yaw), now)
+
+    def authority_state(self) -> dict:
+        """Who has control and the broadcast rates now (for --stats: what a client left behind)."""
+        return {"control": self.control, "control_pending": self.pending, "activated": self.activated,
+                "rates": dict(self.rates),
+                "initial_rates": {**self.profile.default_rates_hz, **(self.cfg.rates or {})}}
+
+    def _control_request(self, obtain: int) -> int:
+        if not self.activated:
+            return 0xFF01   # not activated (the version query's code; decision, see docs/ACCEPTANCE.md)
+        if obtain:
+            if RC_MODE[self.cfg.rc_mode] != RC_MODE["F"]:
+                self.pending = None
+                return 0   # rc_not_in_f_mode
+            self.onboard_requested = True
+            if self.control == "onboard":
+                return 2
+            if self.pending == "obtain":
+                self.pending, self.control = None, "onboard"
+                return 2
+            self.pending = "obtain"
+            return 3
+        if self.control == "rc":
+            self.pending = None
+            self.onboard_requested = False
+            return 1
+        if self.pending == "release":
+            self.pending, self.control = None, "rc"
+            self.onboard_requested = False
+            return 1
+        self.pending = "release"
+        return 4
+
+    # ---- main loop -------------------------------------------------------
+
+    def _check_speed(self) -> None:
+        if self.cfg.baud is None:
+            return
+        speed = self.t.speed()
+        want = getattr(termios, f"B{self.cfg.baud}", None)
+        self.baud_ok = speed is None or want is None or speed == want
+
+    def run(self) -> None:
+        cfg = self.cfg
+        period = 0.0
+        while self.running:
+            now = time.monotonic()
+            elapsed = now - self.start
+            if cfg.exit_after is not None and elapsed >= cfg.exit_after:
+                break
+            if cfg.unplug_at is not None and self.unplugged_until is None and elapsed >= cfg.unplug_at:
+                self.t.unplug()
+                self.outbuf.clear()
+                self.unplugged_until = now + cfg.unplug_for
+                cfg.unplug_at = None
+            if self.unplugged_until is not None and now >= self.unplugged_until:
+                self.t.replug()
+                self.unplugged_until = None
+            stalled = cfg.stall_at is not None and elapsed >= cfg.stall_at
+            rate = self.frame_rate()
+            period = 1.0 / (rate * (1.0 + cfg.rate_drift)) if rate > 0 else 0.0
+            wait = 0.1
+            if self.broadcasting and not stalled and period:
+                wait = max(0.0, min(wait, self.send_at - now))
+            rfds = self.t.read_fds()
+            wfds = [rfds[-1]] if self.outbuf and rfds else []
+            try:
+                r, w, _ = select.select(rfds, wfds, [], wait)
+            except InterruptedError:
+                continue
+            now = time.monotonic()
+            for fd in r:
+                data = self.t.on_readable(fd)
+                if data:
+                    self.on_received(data, now, stalled)
+            if w:
+                self._flush()
+            self.vehicle.step(now - self.last_step, now)
+            self.battery = max(0.0, self.battery - (now - self.last_step) / 60.0)
+            self.last_step = now
+            if not self.broadcasting or stalled or not period:
+                self.next_frame = self.send_at = now
+                continue
+            if now >= self.send_at:
+                self._check_speed()
+                self.emit_broadcast(now)
+                self.next_frame += period
+                if self.next_frame < now - 0.25:   # fell far behind (suspended): do not burst
+                    self.next_frame = now + period
+                jitter = self.rng.uniform(0, cfg.jitter_ms / 1000.0) if cfg.jitter_ms else 0.0
+                self.send_at = self.next_frame + jitter
+
+    def drain(self, timeout: float = 3.0) -> None:
+        """Give the client the chance to read what was sent (a clean stop loses no frame)."""
+        end = time.monotonic() + timeout
+        last, since = -1, time.monotonic()
+        while time.monotonic() < end:
+            if self.outbuf:
+                self._flush()
+            pending = self.t.pending_input() + len(self.outbuf)
+            now = time.monotonic()
+            if pending != last:
+                last, since = pending, now
+            elif pending == 0 and now - since >= DRAIN_SETTLE_S:
+                return
+            elif pending and now - since > DRAIN_STUCK_S:
+                return   # nobody is reading
+            time.sleep(0.01)
+
+
+# --------------------------------------------------------------------------
+# Command line
+
+
+def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
+    ap.add_argument("--profile", default="a3-fw3.1", choices=profiles, help="broadcast wire profile (default a3-fw3.1)")
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--pty", action="store_true", help="open a pseudo-terminal (the default)")
+    where.add_argument("--tcp", type=tcp_port, metavar="PORT", help="listen on TCP PORT (0: any free port) for socket:// URLs")
+    ap.add_argument("--host", default="127.0.0.1", help="address to listen on with --tcp (default 127.0.0.1)")
+    ap.add_argument("--link", metavar="PATH", help="with a pty: a symlink to it that survives --unplug-at")
+    ap.add_argument("--seed", type=non_negative_int, help="random seed: the same seed gives the same faults")
+    ap.add_argument("--app-id", type=uint32, help="app id activation accepts (default: any)")
+    ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
+    ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt every frame sent (needs --key-env)")
+    ap.add_argument("--rc-mode", choices=tuple(RC_MODE), default="F", help="RC mode switch (obtain control needs F)")
+    ap.add_argument("--rate", action="append", default=[], metavar="ITEM=HZ", help="initial rate of an item (repeatable)")
+    ap.add_argument("--baud", type=baud_rate, help="the FC's baud rate; a pty client at another speed sees garbage")
+    ap.add_argument("--hold", action="store_true", help="do not broadcast until SIGUSR1")
+    ap.add_argument("--stats", metavar="FILE", help="write counters as JSON to FILE on exit")
+    ap.add_argument("--log-broadcast", metavar="FILE",
+                    help="write SEQ and value (hex, before fault injection) of every broadcast frame sent, "
+                         "a JSON object a line")
+    f = ap.add_argument_group("fault injection (probabilities are per broadcast frame)")
+    for name in FAULTS:
+        f.add_argument(f"--{name.replace('_', '-')}", type=probability, default=0.0, metavar="P",
+                       help={"noise": "insert 1-16 random bytes before the frame",
+                             "bitflip": "flip one random bit", "drop_bytes": "lose one random byte",
+                             "truncate": "cut the frame short", "bad_crc": "corrupt the CRC-32",
+                             "duplicate": "send the frame twice"}[name])
+    f.add_argument("--jitter", type=non_negative_float, default=0.0, metavar="MS", help="delay each frame by 0..MS ms")
+    f.add_argument("--rate-drift", type=rate_change, default=0.0, metavar="FRAC", help="run every rate FRAC faster (0.2 = +20%%)")
+    f.add_argument("--implausible", action="store_true", help="broadcast implausible values (battery 150, ...)")
+    f.add_argument("--wrong-profile", choices=profiles, help="broadcast in this profile's layout instead")
+    f.add_argument("--stall-at", type=non_negative_float, metavar="S", help="stop sending and answering after S seconds")
+    f.add_argument("--unplug-at", type=non_negative_float, metavar="S", help="close the port after S seconds ...")
+    f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S", help="... and reopen it S seconds later")
+    f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
+
+
+# ---- running the simulator as a child process (kit, soak, tests) ----------
+
+def stop_child(proc) -> None:
+    """SIGTERM a running `osdkc sim` (it drains and writes --stats), kill it
+    if it does not end within 10 s."""
+    if proc.poll() is not None:
+        return
+    proc.send_signal(signal.SIGTERM)
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+
+
+@contextlib.contextmanager
+def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
+    """`osdkc sim SIM_ARGS` in a child process: yields (url, process) once it
+    has printed the URL of its port, and stops it on the way out. With
+    `new_session` a Ctrl-C at the terminal does not reach it, so a host can
+    still hand back control through it before it is stopped."""
+    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *sim_args],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            start_new_session=new_session)
+    try:
+        url = proc.stdout.readline().strip()
+        if not url:
+            proc.wait()
+            raise UsageError("osdkc sim did not start: " + proc.stderr.read().strip())
+        yield url, proc
+    finally:
+        stop_child(proc)
+
+
+def run_sim(args: argparse.Namespace) -> int:
+    key = key_option(args.key_env, args.encrypt)
+    prof = load_profile(args.profile)
+    rates = {}
+    for spec in args.rate:
+        item, _, hz = spec.partition("=")
+        if item not in prof.flag_bits or hz not in ("0", "1", "10", "50", "100"):
+            raise UsageError(f"--rate {spec}: want ITEM=HZ with ITEM one of {', '.join(prof.flag_bits)} "
+                             "and HZ one of 0, 1, 10, 50, 100")
+        rates[item] = int(hz)
+    cfg = SimConfig(profile=args.profile, seed=args.seed, app_id=args.app_id, key=key, encrypt=args.encrypt,
+                    rc_mode=args.rc_mode, faults={n: getattr(args, n) for n in FAULTS}, jitter_ms=args.jitter,
+                    rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
+                    stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
+                    unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
+                    log_broadcast=args.log_broadcast)
+    try:
+        transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)
+    except OSError as e:
+        raise UsageError(f"cannot open the simulator's port: {e.strerror or e}") from None
+    try:
+        sim = Simulator(cfg, transport)
+    except OSError as e:
+        transport.close()
+        raise UsageError(f"--log-broadcast: cannot write {args.log_broadcast}: {e.strerror or e}") from None
+
+    def stop(signum, frame):
+        sim.running = False
+
+    def go(signum, frame):
+        sim.broadcasting = True
+
+    signal.signal(signal.SIGINT, stop)
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGUSR1, go)
+    print(transport.url, flush=True)
+    print(f"osdkc sim: {args.profile} flight controller on {transport.url}"
+          + (f" (pty {transport.path})" if isinstance(transport, PtyTransport) and args.link else ""),
+          file=sys.stderr, flush=True)
+    try:
+        sim.run()
+        sim.drain()
+    finally:
+        transport.close()
+        if sim.broadcast_log:
+            sim.broadcast_log.close()
+        stats = dict(sim.stats, **sim.rx_accounting(), profile=args.profile, seconds=round(time.monotonic() - sim.start, 3),
+                     last_seq=(sim.seq - 1) & 0xFFFF, **sim.authority_state())
+        if args.stats:
+            Path(args.stats).write_text(json.dumps(stats, indent=2) + "\n")
+        print("osdkc sim: stopped; " + ", ".join(f"{k} {v}" for k, v in stats.items() if isinstance(v, int)),
+              file=sys.stderr, flush=True)
+    return 0

@@ -1,0 +1,1 @@
+"""The spec's own checks: the seed-to-spec trace and `osdkc spec check`."""
