@@ -67,7 +67,7 @@ quick: setup
 # the results block of docs/PERFORMANCE.md. Takes tens of minutes.
 bench: setup
 	@mkdir -p reports
-	$(BIN)/osdkc bench --markdown docs/PERFORMANCE.md --json reports/bench.json
+	mkdir -p reports && $(BIN)/osdkc bench --markdown docs/PERFORMANCE.md --json > reports/bench.json
 
 # Every coverage-guided fuzz target for FUZZ_SECONDS each, seeded from
 # vectors/ (docs/FUZZING.md): C libFuzzer (deframer, broadcast), Python

@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import importlib.metadata
 import os
 import sys
 from dataclasses import dataclass
 from typing import Callable, NoReturn, Sequence
 
 from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.paths import where_from
 
 
 @dataclass(frozen=True)
@@ -75,6 +77,13 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+def _version() -> str:
+    try:
+        return importlib.metadata.version("osdk-conformance")
+    except importlib.metadata.PackageNotFoundError:  # run from a tree that was never installed
+        return "unknown version"
+
+
 def _selected(argv: Sequence[str]) -> tuple[str, ...]:
     """The command words of a command line: what to load before parsing it."""
     return tuple(a for a in argv if not a.startswith("-"))[:2]
@@ -94,6 +103,7 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     words = None if argv is None else _selected(argv)
     ap = Parser(prog="osdkc",
                 description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.")
+    ap.add_argument("--version", action="version", version=f"osdkc {_version()} ({where_from()})")
     top = _subparsers(ap, "command", "COMMAND")
     groups: dict[str, argparse._SubParsersAction] = {}
     for cmd in COMMANDS:

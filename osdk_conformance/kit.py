@@ -22,7 +22,7 @@ from osdk_kaitai.osdk_payload import OsdkPayload
 
 from osdk_conformance.core import model
 from osdk_conformance.core.errors import UsageError
-from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.paths import CHECKOUT, REPORTS
 from osdk_conformance.core.rules import profile_names
 from osdk_conformance.device.acceptance import add_arguments as device_arguments, run_device
 from osdk_conformance.harness import status_readme
@@ -73,7 +73,6 @@ IMPLEMENTATIONS: list[tuple[str, Callable[[WorkedFrame], list[str]]]] = [
 ]
 
 
-REPORTS = ROOT / "reports"
 
 
 def _command(name: str, add_arguments: Callable, run: Callable, *argv: str) -> int:
@@ -128,7 +127,8 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         ok = _command(*step) == 0
         passed += ok
         failed += not ok
-    status_readme.update(REPORTS / "conformance.json")
+    if CHECKOUT:  # the status section of the checkout's generated/README.md; an installed package is not written to
+        status_readme.update(REPORTS / "conformance.json")
     ok = _acceptance_on_simulator() == 0
     passed += ok
     failed += not ok

@@ -115,3 +115,23 @@ def test_the_reported_cases_exit_2_as_a_user_runs_them(args, option):
     assert proc.returncode == 2 and proc.stdout == ""
     (line,) = proc.stderr.strip().splitlines()
     assert line.startswith(f"osdkc {args[0]}: error: argument {option}: ")
+
+
+def options_named(name: str) -> list[tuple[str, argparse.Action]]:
+    return [(" ".join(path), a) for path, p in subcommand_parsers(build_parser()) for a in p._actions
+            if name in a.option_strings]
+
+
+def test_the_same_option_means_the_same_in_every_subcommand():
+    json_flags = options_named("--json")
+    assert {cmd for cmd, _ in json_flags} >= {"spec trace", "soak", "bench"}
+    # --json: print the numbers or the table as JSON on standard output, never a file name
+    assert all(a.nargs == 0 and a.const is True for _, a in json_flags), json_flags
+    # --impl: repeatable wherever it is taken
+    impls = options_named("--impl")
+    assert {cmd for cmd, _ in impls} >= {"run", "fuzz", "bench"}
+    assert all(isinstance(a, argparse._AppendAction) for _, a in impls), impls
+    # --jobs: one default
+    jobs = options_named("--jobs")
+    assert {cmd for cmd, _ in jobs} >= {"run", "selftest"}
+    assert {a.default for _, a in jobs} == {options.DEFAULT_JOBS}

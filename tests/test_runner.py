@@ -548,3 +548,25 @@ def test_every_bundled_implementation_has_a_reviewed_failure_list() -> None:
         path = default_failure_list(impl)
         assert path.exists(), path
         assert read_failure_list(path) == {}, f"{path}: every bundled implementation conforms, so its list is empty"
+
+
+def test_impl_is_repeatable_and_runs_the_chosen_implementations_side_by_side(tmp_path: Path) -> None:
+    proc = osdkc("run", "--impl", "construct", "--impl", "kaitai-python", "--filter", "worked",
+                 "--report-dir", str(tmp_path), "--no-progress")
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert "2 implementations" in proc.stdout and "ALL CONFORM" in proc.stdout
+    ran = json.loads((tmp_path / "conformance.json").read_text())["implementations"]
+    assert [s["impl"] for s in ran] == ["construct", "kaitai-python"]
+
+
+def test_the_first_request_also_waits_for_the_start_up(tmp_path: Path) -> None:
+    # start-up on a loaded machine is not a slow answer; later requests get the plain timeout
+    slow = tmp_path / "slow_start.py"
+    slow.write_text("import json, sys, time\ntime.sleep(1.0)\nfor line in sys.stdin:\n"
+                    "    print(json.dumps({'ok': False, 'unsupported': True}), flush=True)\n")
+    t = supervision.Testee([sys.executable, str(slow)], timeout=0.3)
+    try:
+        assert t.request({"op": "capabilities"}) == {"ok": False, "unsupported": True}
+        assert t.request({"op": "decode_frame"}) == {"ok": False, "unsupported": True}
+    finally:
+        t.close()

@@ -60,8 +60,8 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--input", metavar="FILE",
                     help="decode this capture (raw bytes) instead of the corpora; needs --profile")
     ap.add_argument("--profile", choices=profiles, help="the wire profile of --input")
-    ap.add_argument("--impl", metavar="NAMES",
-                    help=f"comma-separated implementations (default all: {', '.join(impl_names())})")
+    ap.add_argument("--impl", action="append", metavar="IMPL",
+                    help=f"an implementation to decode with (repeatable; default all: {', '.join(impl_names())})")
     ap.add_argument("--repeats", type=positive_int, default=REPEATS, metavar="N",
                     help=f"runs per implementation and corpus; the best counts (default {REPEATS})")
     ap.add_argument("--budget", type=positive_float, default=BUDGET, metavar="S",
@@ -84,7 +84,8 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="reliability: comma-separated simulator faults to run (default all)")
     ap.add_argument("--parallel", type=positive_int, default=1, metavar="N",
                     help="reliability: runs at a time (default 1)")
-    ap.add_argument("--json", metavar="FILE", help="write every number as JSON")
+    ap.add_argument("--json", action="store_true",
+                    help="print every number as one JSON object instead of the tables (as every --json does)")
     ap.add_argument("--markdown", metavar="FILE",
                     help="write the tables, command and machine as Markdown; in a file with a bench block "
                          "(docs/PERFORMANCE.md) only that block is replaced")
@@ -132,12 +133,12 @@ def command_line(args: argparse.Namespace) -> str:
 def run_bench(args: argparse.Namespace) -> int:
     sections = _names(args.only, SECTIONS, "section") if args.only else list(DEFAULT_SECTIONS)
     kinds = _names(args.fault_kinds, tuple(FAULT_CASES), "fault kind")
-    impls = _names(args.impl, bench_decode.impl_names(), "implementation")
+    impls = _names(",".join(args.impl) if args.impl else None, bench_decode.impl_names(), "implementation")
     if (args.input is None) != (args.profile is None):
         raise UsageError("--input and --profile go together")
     if args.input is not None and (args.corpora or args.corpus_seconds):
         raise UsageError("--input replaces the corpora: no --corpora or --corpus-seconds with it")
-    json_path, md_path = _writable(args.json, "--json"), _writable(args.markdown, "--markdown")
+    md_path = _writable(args.markdown, "--markdown")
     pick = 1 if args.quick else 0
     fuzz_examples = args.fuzz_examples or DEFAULTS["fuzz_examples"][pick]
     soak_seconds = args.soak_seconds or DEFAULTS["soak_seconds"][pick]
@@ -177,10 +178,8 @@ def run_bench(args: argparse.Namespace) -> int:
     result["targets"] = bench_report.targets(result)
     result["ok"] = _ok(result)
 
-    print(bench_report.terminal(result))
+    print(json.dumps(result, indent=1) if args.json else bench_report.terminal(result))
     try:
-        if json_path:
-            json_path.write_text(json.dumps(result, indent=1) + "\n", encoding="utf-8")
         if md_path:
             bench_report.write_markdown(md_path, bench_report.markdown(result))
     except OSError as e:

@@ -51,7 +51,7 @@ from osdk_construct.payload import VERSION_ID_SIZE, payload, version_ack_value
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import Frame, deframe
 from osdk_conformance.core.errors import UsageError
-from osdk_conformance.core.paths import ROOT, SPEC
+from osdk_conformance.core.paths import CACHE, SPEC
 from osdk_conformance.core.rules import crc_params, profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode
 from osdk_conformance.reference import values
@@ -60,7 +60,7 @@ from osdk_conformance.sim import simulator
 
 GENERATOR_VERSION = 1
 SEED = 0x05D4
-CACHE_DIR = ROOT / ".cache" / "bench"
+CACHE_DIR = CACHE / "bench"
 NOISE_FREE = 0x55  # stands in for 0xAA in noise: a start byte would make the counts depend on chance
 
 

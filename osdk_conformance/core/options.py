@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 from dataclasses import dataclass
 from typing import Callable
 
@@ -56,3 +57,7 @@ baud_rate = NumberType("baud_rate", int, 50, 12_000_000, expected="a baud rate i
 
 CHECKED_TYPES = (positive_float, non_negative_float, fraction, probability, rate_change, positive_int,
                  non_negative_int, uint32, tcp_port, baud_rate)
+
+
+DEFAULT_JOBS = os.cpu_count() or 1
+"""The one default of every --jobs: as many at a time as there are CPUs."""

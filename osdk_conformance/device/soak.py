@@ -17,6 +17,7 @@ import argparse
 import json
 import resource
 import signal
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -103,5 +104,6 @@ def run_soak(args: argparse.Namespace) -> int:
         print(f"  decode latency   p50 {lat['p50']} ms, p95 {lat['p95']} ms, p99 {lat['p99']} ms, max {lat['max']} ms")
         print(f"  receiver CPU     {out['receiver_cpu_s']} s = {out['receiver_cpu_percent']}% of one core")
     ok = out["frames_lost"] == 0 and gaps == 0 and not out["decode_errors"] and received > 0
-    print(f"soak: {'PASS' if ok else 'FAIL'}: {out['frames_lost']} frames lost")
+    # with --json, standard output is the JSON object alone (as with every --json)
+    print(f"soak: {'PASS' if ok else 'FAIL'}: {out['frames_lost']} frames lost", file=sys.stderr if args.json else sys.stdout)
     return 0 if ok else 1

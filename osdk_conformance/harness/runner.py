@@ -46,8 +46,8 @@ from pathlib import Path
 from typing import Any, Callable, Sequence, TextIO
 
 from osdk_conformance.core.errors import UsageError, cannot_read, exit_status_of_signal
-from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
-from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positive_float, positive_int
+from osdk_conformance.core.paths import CHECKOUT, REPORTS, ROOT, needs_checkout
 from osdk_conformance.harness import report, response_schema, vectors
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, STATUSES, XFAIL, XPASS, Result
 from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
@@ -81,8 +81,26 @@ def impl_argv(name: str) -> list[str]:
         raise UsageError(f"no bundled implementation {name!r} (known: {', '.join(BUNDLED_IMPLS)})") from None
     for part in argv[1:] if argv[0] in (sys.executable, "node", "java") else argv[:1]:
         if part.startswith("/") and not Path(part).exists():
-            raise UsageError(f"bundled implementation {name!r} is not built ({part} is missing); {BUILD_HINT}")
+            why = needs_checkout(f"the bundled implementation {name!r}") or \
+                f"bundled implementation {name!r} is not built ({part} is missing); {BUILD_HINT}"
+            raise UsageError(why)
     return argv
+
+
+def select_cases(cases: Sequence[Any], profiles: Sequence[str] | None, id_part: str | None) -> list[Any]:
+    """The cases of `profiles` (all when none; a profile-free case always) whose id contains `id_part`."""
+    return [c for c in cases if (not profiles or c.profile is None or c.profile in profiles)
+            and (not id_part or id_part in c.id)]
+
+
+def available_impls() -> tuple[list[str], list[str]]:
+    """(implementations to run, implementations absent). A checkout runs every
+    bundled one (a missing build is its failure); an installed package has
+    only the Python testees, and says so rather than failing the others."""
+    if CHECKOUT:
+        return list(BUNDLED_IMPLS), []
+    present = [i for i, argv in BUNDLED_IMPLS.items() if argv[0] == sys.executable]
+    return present, [i for i in BUNDLED_IMPLS if i not in present]
 
 
 # ---- failure list ----------------------------------------------------------------
@@ -585,8 +603,9 @@ def _replay(argv: list[str], cases: list, compare, timeout: float, memory_mb: in
 def run_command(args: argparse.Namespace) -> int:
     _check_writable(args.junit, "--junit")
     _check_writable(args.html, "--html")
-    if args.impl == ALL:
-        return run_all(args)
+    if args.impl and (len(args.impl) > 1 or ALL in args.impl):
+        return run_all(args, [i for i in BUNDLED_IMPLS if ALL in args.impl or i in args.impl])
+    args.impl = args.impl[0] if args.impl else None
     _check_writable(args.summary_json, "--summary-json")
     argv = impl_argv(args.impl) if args.impl else args.testee
     if args.failure_list is None and args.impl and default_failure_list(args.impl).exists():
@@ -595,9 +614,7 @@ def run_command(args: argparse.Namespace) -> int:
 
     all_cases, compare = _load_cases(args.vectors)
     known_ids = {c.id for c in all_cases}
-    cases = [c for c in all_cases
-             if (not args.profile or c.profile is None or c.profile in args.profile)
-             and (not args.filter or args.filter in c.id)]
+    cases = select_cases(all_cases, args.profile, args.filter)
     if not cases:
         raise UsageError("no vector matches the --profile / --filter selection")
 
@@ -694,9 +711,9 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--testee", metavar="COMMAND",
                        help="command that starts the implementation under test (split like a shell does)")
-    which.add_argument("--impl", choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
-                       help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}), or {ALL} for every one "
-                            "(reports in --report-dir)")
+    which.add_argument("--impl", action="append", choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
+                       help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}), or {ALL} for every one; "
+                            "repeatable: more than one run side by side, reports in --report-dir")
     p.add_argument("--profile", action="append", choices=profiles, metavar="PROFILE",
                    help=f"only this profile (repeatable; one of {', '.join(profiles)}); "
                         "cases without a profile always run")
@@ -713,10 +730,10 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
                    help="vector file(s) to use instead of vectors/*.json (repeatable)")
     p.add_argument("--no-progress", action="store_true", help="no progress output on stderr")
     p.add_argument("--summary-json", metavar="FILE", help="write the run's counts and verdict as JSON")
-    p.add_argument("--report-dir", metavar="DIR", default=str(ROOT / "reports"),
+    p.add_argument("--report-dir", metavar="DIR", default=str(REPORTS),
                    help="with --impl all: where each implementation's JUnit, HTML, log and summary go, "
                         "and conformance.json (default: reports/)")
-    p.add_argument("--jobs", type=positive_int, metavar="N", default=os.cpu_count() or 1,
+    p.add_argument("--jobs", type=positive_int, metavar="N", default=DEFAULT_JOBS,
                    help="with --impl all: implementations run at once (default: the number of CPUs)")
 
 
@@ -753,16 +770,16 @@ def status_table(summaries: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def run_all(args: argparse.Namespace) -> int:
-    """Every bundled implementation, `--jobs` at a time, each in its own
+def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
+    """The `chosen` bundled implementations (--impl all: every one), `--jobs` at a time, each in its own
     `osdkc run` process (the runner's judging is CPU-bound Python, so
     processes, not threads, use the cores). One table at the end; each
     run's JUnit, HTML, log and summary in --report-dir, and
     conformance.json with every summary (generated/README.md's status is
     rendered from it)."""
     if args.testee or args.failure_list or args.junit or args.html or args.summary_json:
-        raise UsageError("--impl all writes its reports to --report-dir; --failure-list, --junit, --html and "
-                         "--summary-json apply to a single implementation")
+        raise UsageError("more than one --impl (or all) writes its reports to --report-dir; --failure-list, "
+                         "--junit, --html and --summary-json apply to a single implementation")
     if args.jobs < 1:
         raise UsageError("--jobs must be at least 1")
     out_dir = Path(args.report_dir)
@@ -797,12 +814,17 @@ def run_all(args: argparse.Namespace) -> int:
         summary["exit"] = code
         return summary
 
+    present, absent = available_impls()
+    impls = [i for i in present if i in chosen]
+    absent = [i for i in absent if i in chosen]
     start = time.monotonic()
-    print(f"osdkc run --impl all: {len(BUNDLED_IMPLS)} implementations, {args.jobs} at a time", flush=True)
+    print(f"osdkc run: {len(impls)} implementations, {args.jobs} at a time", flush=True)
+    if absent:
+        print(f"not run: {', '.join(absent)}: {needs_checkout('they')}", flush=True)
     with SignalStop() as stop, ThreadPoolExecutor(max_workers=args.jobs) as pool:
         futures = []
         try:
-            futures += [pool.submit(one, impl) for impl in BUNDLED_IMPLS]
+            futures += [pool.submit(one, impl) for impl in impls]
             for f in futures:
                 f.result()
         except Interrupted as i:
@@ -829,5 +851,6 @@ def run_all(args: argparse.Namespace) -> int:
     if stopping:
         print(f"INTERRUPTED by {stopping[0]}: no verdict (partial reports)")
         return exit_status_of_signal(stopping[0])
-    print("ALL CONFORM" if ok else "NOT ALL CONFORM")
+    verdict = "ALL CONFORM" if ok else "NOT ALL CONFORM"
+    print(f"{verdict} ({len(impls)} of {len(chosen)} implementations ran)" if absent else verdict)
     return 0 if ok else 1

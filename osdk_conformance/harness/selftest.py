@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 from typing import Any, Iterable, Iterator, Sequence, TextIO
 
 from osdk_conformance.core.errors import UsageError
-from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
+from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positive_float, positive_int
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.harness import mutants
 from osdk_conformance.harness.report import FAIL
@@ -48,7 +48,6 @@ from osdk_conformance.harness.testee import Testee, TesteeStartError
 from osdk_conformance.harness.vectors import compare, load_cases
 
 MUTANT_TESTEE = ROOT / "conformance" / "testees" / "mutant_testee.py"
-DEFAULT_JOBS = 2
 DEFAULT_MAX_FAILURES = 3
 DEFAULT_TIMEOUT = 2.0
 
@@ -268,7 +267,7 @@ def report(outcome: SelftestOutcome, max_failures: int, out: TextIO) -> None:
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
     p.add_argument("--mutant", action="append", metavar="NAME", help="only this mutant (repeatable; default: all)")
     p.add_argument("--jobs", type=positive_int, default=DEFAULT_JOBS, metavar="N",
-                   help=f"mutants run in parallel (default {DEFAULT_JOBS})")
+                   help="mutants run in parallel (default: the number of CPUs)")
     p.add_argument("--max-failures", type=non_negative_int, default=DEFAULT_MAX_FAILURES, metavar="N",
                    help=f"stop a mutant's run after N failing vectors (default {DEFAULT_MAX_FAILURES}; "
                         "0: replay every vector and count all failures)")

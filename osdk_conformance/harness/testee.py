@@ -57,6 +57,8 @@ from typing import Any
 
 TESTEE_CRASH = "testee_crash"
 TESTEE_TIMEOUT = "testee_timeout"
+STARTUP_SECONDS = 10.0
+"""Added to the timeout of the testee's very first request (its start-up)."""
 TESTEE_GARBAGE = "testee_garbage"
 TESTEE_OOM = "testee_oom"
 FAILURE_KINDS = (TESTEE_CRASH, TESTEE_TIMEOUT, TESTEE_GARBAGE, TESTEE_OOM)
@@ -279,6 +281,7 @@ class Testee:
 
     def request(self, obj: dict) -> dict:
         """Send one request, return the response object or raise."""
+        first_start = self._proc is None and not self.starts
         if self._proc is None:
             if self.starts:
                 if self.restarts_in_a_row >= self.max_restarts:
@@ -289,7 +292,10 @@ class Testee:
         data = (json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n").encode()
         stderr_before = self.stderr.total
         try:
-            line = self._exchange(data)
+            # the first request also waits for the start-up (an interpreter or a
+            # JVM loading on a busy machine is not a slow answer); restarts do
+            # not, so a testee that keeps hanging costs the timeout each time
+            line = self._exchange(data, STARTUP_SECONDS if first_start else 0.0)
         except TesteeFailure as f:
             f.stderr = self._stderr_since(stderr_before)
             raise
@@ -316,10 +322,10 @@ class Testee:
         text = bytes(self.stderr.buf[-keep:]).decode("utf-8", "replace")
         return ("…" if keep < new else "") + text
 
-    def _exchange(self, data: bytes) -> bytes:
+    def _exchange(self, data: bytes, startup: float) -> bytes:
         proc, sel = self._proc, self._sel
         assert proc is not None and sel is not None
-        deadline = time.monotonic() + self.timeout
+        deadline = time.monotonic() + self.timeout + startup
         # Output nobody asked for (a second line after the last response, or
         # chatter on stdout) would be taken for this request's answer.
         if self._out or any(key.fileobj is proc.stdout for key, _ in sel.select(0)):
@@ -359,7 +365,8 @@ class Testee:
                 if remaining <= 0:
                     self._killed_by_us = True
                     self.kill()
-                    raise TesteeFailure(TESTEE_TIMEOUT, f"no response within {self.timeout:g} s")
+                    raise TesteeFailure(TESTEE_TIMEOUT, f"no response within {self.timeout:g} s"
+                                        + (f" (and {startup:g} s for its start-up)" if startup else ""))
                 for key, _ in sel.select(remaining):
                     if key.fileobj is proc.stdin:
                         try:

@@ -12,13 +12,17 @@ import subprocess
 import sys
 from typing import Callable, Sequence
 
-from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core import ksy
+from osdk_conformance.core.paths import ROOT, needs_checkout
 from osdk_conformance.core.rules import load_rules
 from osdk_conformance.traceability.trace import add_seed_argument
 from osdk_conformance.traceability.trace import check, errata_ids, seed_from
 
 
 def _generated_in_sync() -> str:
+    if why := needs_checkout("compiling the .ksy files and comparing generated/ with them"):
+        index = ksy.load()
+        raise Skipped(f"{len(index.files)} .ksy files read; {why}")
     proc = subprocess.run([sys.executable, str(ROOT / "tools" / "regen.py"), "--check"],
                           capture_output=True, text=True)
     if proc.returncode != 0:

@@ -1,0 +1,132 @@
+"""The kit as a user installs it: the sdist is built from this tree, the wheel
+from the sdist (so the sdist is shown to carry everything), the wheel is
+installed into a new virtual environment outside the checkout, and the
+README's user flows run from an empty directory. Nothing of the checkout is
+on the path, and nothing is written into the installed package.
+"""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from osdk_conformance.core.paths import ROOT
+from osdk_conformance.reference.worked_examples import WORKED_FRAMES
+
+pytestmark = pytest.mark.slow
+
+CONSTRAINTS = ROOT / "constraints.txt"
+
+
+def run(argv: list, cwd: Path, env: dict | None = None, timeout: float = 600) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([str(a) for a in argv], cwd=cwd, env=env, capture_output=True, text=True,
+                          timeout=timeout, stdin=subprocess.DEVNULL)
+
+
+def ok(proc: subprocess.CompletedProcess[str]) -> str:
+    assert proc.returncode == 0, f"exit {proc.returncode}\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}"
+    return proc.stdout
+
+
+@pytest.fixture(scope="module")
+def installed(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str], Path]:
+    """(the installed osdkc, its environment, an empty working directory)."""
+    base = tmp_path_factory.mktemp("wheel")
+    dist = base / "dist"
+    ok(run([sys.executable, "-m", "build", "--outdir", dist, ROOT], cwd=base))
+    wheels = sorted(dist.glob("*.whl"))
+    assert len(wheels) == 1 and len(list(dist.glob("*.tar.gz"))) == 1
+    venv = base / "venv"
+    ok(run([sys.executable, "-m", "venv", venv], cwd=base))
+    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "-c", CONSTRAINTS, wheels[0]],
+           cwd=base))
+    work = base / "work"
+    work.mkdir()
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV", "OSDK_SEED")}
+    env["PATH"] = f"{venv / 'bin'}{os.pathsep}{env['PATH']}"
+    env["XDG_CACHE_HOME"] = str(base / "cache")
+    return venv / "bin/osdkc", env, work
+
+
+def osdkc(installed, *argv: str, timeout: float = 600) -> subprocess.CompletedProcess[str]:
+    exe, env, work = installed
+    return run([exe, *argv], cwd=work, env=env, timeout=timeout)
+
+
+def test_it_runs_from_the_installed_package(installed) -> None:
+    out = ok(osdkc(installed, "--version"))
+    assert "installed at" in out and str(ROOT) not in out
+
+
+def test_decode(installed) -> None:
+    wf = next(w for w in WORKED_FRAMES if w.profile == "a3-fw3.1" and "battery" in w.name)
+    events = [json.loads(line) for line in ok(osdkc(installed, "decode", "--profile", wf.profile,
+                                                    "--hex", wf.hex)).splitlines()]
+    assert [e["kind"] for e in events] == ["frame"]
+    assert events[0]["frame"]["data"]["value"]["body"]["data"]["battery"] == 87
+
+
+def test_spec_check_says_what_it_could_not_check(installed) -> None:
+    out = ok(osdkc(installed, "spec", "check"))
+    assert "skip  ksy" in out and "needs a checkout" in out
+    assert "ok    rules" in out and "ok    errata" in out
+
+
+def test_vectors_check_and_coverage(installed) -> None:
+    assert "OK" in ok(osdkc(installed, "vectors", "check", "--no-spec")).upper()
+    ok(osdkc(installed, "vectors", "coverage"))
+
+
+@pytest.mark.parametrize("impl", ["construct", "kaitai-python"])
+def test_run_a_bundled_python_implementation(installed, impl: str) -> None:
+    out = ok(osdkc(installed, "run", "--impl", impl, "--profile", "a3-fw3.1", "--filter", "worked",
+                   "--no-progress"))
+    assert "CONFORMS" in out
+
+
+def test_a_testee_in_another_language_needs_the_checkout(installed) -> None:
+    proc = osdkc(installed, "run", "--impl", "c")
+    assert proc.returncode == 2 and "needs a checkout" in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_selftest_one_mutant(installed) -> None:
+    out = ok(osdkc(installed, "selftest", "--mutant", "crc16_init_ffff", "--no-baseline"))
+    assert "killed" in out
+
+
+def test_fuzz(installed) -> None:
+    ok(osdkc(installed, "fuzz", "--impl", "construct", "--impl", "kaitai-python", "--max-examples", "50",
+             "--seed", "1"))
+
+
+def test_sim(installed) -> None:
+    proc = osdkc(installed, "sim", "--profile", "a3-fw3.1", "--exit-after", "0.3", timeout=60)
+    ok(proc)
+
+
+def test_soak_streams_from_the_simulator_through_the_receiver(installed) -> None:
+    numbers = json.loads(ok(osdkc(installed, "soak", "--duration", "2", "--hz", "10", "--json", timeout=120)))
+    assert numbers["profile"] == "a3-fw3.1"
+
+
+def test_the_python_api_from_the_installed_package(installed) -> None:
+    exe, env, work = installed
+    script = ("from osdk_conformance import api\n"
+              "run = api.run_conformance(impl='construct', filter='worked')\n"
+              "print(run.conforms, len(run.results))\n")
+    out = ok(run([exe.parent / "python", "-c", script], cwd=work, env=env))
+    conforms, cases = out.split()
+    assert conforms == "True" and int(cases) > 0
+
+
+def test_nothing_was_written_into_the_package(installed) -> None:
+    exe, env, _ = installed
+    site = Path(ok(run([exe.parent / "python", "-c", "import osdk_conformance, pathlib; "
+                                                      "print(pathlib.Path(osdk_conformance.__file__).parent)"],
+                       cwd=installed[2], env=env)).strip())
+    written = [p for p in (site / "_data").rglob("*") if p.is_dir() and p.name in ("reports", ".cache")]
+    assert written == []
