@@ -13,6 +13,7 @@ import sys
 from pathlib import Path
 
 import pytest
+import yaml
 
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.reference.worked_examples import WORKED_FRAMES
@@ -33,16 +34,23 @@ def ok(proc: subprocess.CompletedProcess[str]) -> str:
 
 
 @pytest.fixture(scope="module")
-def installed(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str], Path]:
-    """(the installed osdkc, its environment, an empty working directory)."""
-    base = tmp_path_factory.mktemp("wheel")
+def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The wheel, built from the sdist."""
+    base = tmp_path_factory.mktemp("build")
     dist = base / "dist"
     ok(run([sys.executable, "-m", "build", "--outdir", dist, ROOT], cwd=base))
     wheels = sorted(dist.glob("*.whl"))
     assert len(wheels) == 1 and len(list(dist.glob("*.tar.gz"))) == 1
+    return wheels[0]
+
+
+@pytest.fixture(scope="module")
+def installed(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str], Path]:
+    """(the installed osdkc, its environment, an empty working directory)."""
+    base = tmp_path_factory.mktemp("wheel")
     venv = base / "venv"
     ok(run([sys.executable, "-m", "venv", venv], cwd=base))
-    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "-c", CONSTRAINTS, wheels[0]],
+    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "-c", CONSTRAINTS, wheel],
            cwd=base))
     work = base / "work"
     work.mkdir()
@@ -130,3 +138,33 @@ def test_nothing_was_written_into_the_package(installed) -> None:
                        cwd=installed[2], env=env)).strip())
     written = [p for p in (site / "_data").rglob("*") if p.is_dir() and p.name in ("reports", ".cache")]
     assert written == []
+
+
+def test_the_ci_recipe_runs(wheel: Path, installed, tmp_path: Path) -> None:
+    """The steps of docs/ci/osdk-conformance.yml that are the kit's (install it,
+    replay the vectors), run as Actions would, with the bundled Construct
+    testee standing in for an SDK's; the build step is the SDK's own."""
+    workflow = yaml.safe_load((ROOT / "docs/ci/osdk-conformance.yml").read_text())
+    steps = {s.get("id"): s for s in workflow["jobs"]["conformance"]["steps"]}
+    sdk = tmp_path / "sdk"
+    (sdk / "conformance").mkdir(parents=True)
+    (sdk / "conformance/osdk-failures.txt").write_text("# no known failure\n")
+    actions = {"RUNNER_TEMP": tmp_path / "runner", "GITHUB_PATH": tmp_path / "path",
+               "GITHUB_STEP_SUMMARY": tmp_path / "summary.md"}
+    actions["RUNNER_TEMP"].mkdir()
+    _, env, _ = installed
+    env = {**env, **{k: str(v) for k, v in actions.items()}}
+    env["PATH"] = os.pathsep.join(p for p in env["PATH"].split(os.pathsep) if "venv" not in p)
+    ok(run(["bash", "-e", "-c", steps["kit"]["run"]], cwd=sdk, env={**env, "OSDKC_WHEEL": str(wheel)}))
+    env["PATH"] = os.pathsep.join([*actions["GITHUB_PATH"].read_text().split(), env["PATH"]])
+    kit = Path(actions["GITHUB_PATH"].read_text().split()[0])
+    data = ok(run([kit / "python", "-c", "from osdk_conformance.core.paths import ROOT; print(ROOT)"],
+                  cwd=sdk, env=env)).strip()
+    testee = f"{kit / 'python'} {data}/conformance/testees/construct_testee.py"
+    out = ok(run(["bash", "-e", "-c", steps["conformance"]["run"]], cwd=sdk,
+                 env={**env, "OSDKC_TESTEE": testee, "OSDKC_RUN_ARGS": "--profile a3-fw3.1"}))
+    assert "CONFORMS" in out
+    reports = sdk / "osdk-reports"
+    assert {p.name for p in reports.iterdir()} >= {"conformance.xml", "conformance.html", "summary.json", "run.txt"}
+    assert json.loads((reports / "summary.json").read_text())["conforms"] is True
+    assert "OPEN protocol conformance" in actions["GITHUB_STEP_SUMMARY"].read_text()
