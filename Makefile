@@ -5,6 +5,8 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 PY_OK  := $(VENV)/.installed
+ACCEL_OK  := $(VENV)/.accel-built
+ACCEL_SRC := osdk_conformance/reference/_accel.c $(wildcard generated/c/*.[ch] generated/cpython/*.[ch])
 JS_OK  := tools/ksc/node_modules/.installed
 
 .PHONY: setup system-packages testees kit test quick regen check-generated vectors bench fuzz clean
@@ -13,7 +15,7 @@ JS_OK  := tools/ksc/node_modules/.installed
 # the language's standard tool (npm, Maven, go build, cc).
 LANGS  := javascript java go c
 
-setup: system-packages $(PY_OK) $(JS_OK) testees
+setup: system-packages $(PY_OK) $(ACCEL_OK) $(JS_OK) testees
 
 # clang + sanitizer/libFuzzer runtimes from Debian, pinned (tools/apt-packages.sh).
 system-packages:
@@ -26,6 +28,15 @@ testees: $(PY_OK) $(JS_OK)
 $(PY_OK): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --disable-pip-version-check -c constraints.txt -e '.[test]'
+	touch $@
+
+# The native accelerator (osdk_conformance/reference/_accel.c and the generated
+# C it compiles), built by the editable install: rebuilt when a source
+# changes, and a failed build is an error here (this README asks for gcc),
+# not the silent fallback to pure Python that a user's pip install allows.
+$(ACCEL_OK): $(PY_OK) $(ACCEL_SRC)
+	$(BIN)/pip install --quiet --disable-pip-version-check -c constraints.txt --no-deps -e .
+	$(BIN)/python -c "import osdk_conformance.reference._accel"
 	touch $@
 
 $(JS_OK): tools/ksc/package.json tools/ksc/package-lock.json

@@ -51,6 +51,7 @@ from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, 
 from osdk_conformance.harness.vectors import Case, compare as judge, load_checked_cases
 from osdk_conformance.reference import codec, values
 from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, stream_events
+from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
 from osdk_construct import F32, F64, encode_movement_control as _encode_movement_value, osdk_payload
 
@@ -184,8 +185,10 @@ class Event:
     @classmethod
     def from_model(cls, event: Mapping[str, Any]) -> "Event":
         """The Event of one object of `osdkc decode`'s output."""
-        known = {name for name in cls.__dataclass_fields__ if name != "model"}
-        return cls(**{k: v for k, v in event.items() if k in known}, model=dict(event))
+        model = dict(event)
+        if "offset" not in model or "kind" not in model:
+            raise InputError(f"not an event of osdkc decode (no offset or kind): {model!r}")
+        return _event({k: model[k] for k in model if k in _EVENT_FIELDS}, model)
 
     @property
     def value(self) -> Any:
@@ -205,10 +208,33 @@ class Event:
         return value_model.dumps(self.model, indent=indent)
 
 
+_EVENT_FIELDS = frozenset(Event.__dataclass_fields__) - {"model"}
+_new_event = object.__new__
+_set_state = object.__setattr__
+
+
+def _event(state: dict[str, Any], model: dict[str, Any]) -> Event:
+    # The fields go straight into the instance dict: the generated __init__
+    # of a frozen dataclass sets each of them through object.__setattr__,
+    # which costs more per event than the native decoder takes to decode a
+    # frame. Fields an event does not have are the class's defaults (None).
+    state["model"] = model
+    ev = _new_event(Event)
+    _set_state(ev, "__dict__", state)
+    return ev
+
+
 def _events(models: Iterable[dict[str, Any]]) -> Iterator[Event]:
+    # Every key of a decoder's event is a field of Event (tests/test_accel.py).
+    # _event, inlined: this loop runs once per frame of a capture.
+    new, set_state = _new_event, _set_state
     try:
         for ev in models:
-            yield Event.from_model(ev)
+            state = ev.copy()
+            state["model"] = ev
+            event = new(Event)
+            set_state(event, "__dict__", state)
+            yield event
     except UsageError as e:  # a damaged capture, or --direction tx/both on raw bytes
         raise InputError(str(e)) from None
 
@@ -548,8 +574,9 @@ class ConformanceRun:
 
 def bundled_implementations() -> tuple[str, ...]:
     """The bundled implementations `run_conformance(impl=...)` can start
-    here: all six in a checkout (the compiled ones once `make setup` built
-    them), the two Python ones (construct, kaitai-python) when installed."""
+    here: all seven in a checkout (the compiled ones once `make setup` built
+    them); when installed, the two Python ones (construct, kaitai-python) and
+    the accelerator's (accel) if it was compiled at install."""
     return tuple(available_impls()[0])
 
 
@@ -658,8 +685,9 @@ class RunningSimulator:
 
     def stats(self) -> dict[str, Any]:
         """Its counters so far: frames and bytes sent, broadcasts, ACKs,
-        commands received and rejected, faults injected (as `osdkc sim --stats`)."""
-        return {k: dict(v) if isinstance(v, dict) else v for k, v in self._sim.stats.items()}
+        commands received and rejected, faults injected, planted bugs triggered (as `osdkc sim --stats`)."""
+        return {k: dict(v) if isinstance(v, dict) else list(v) if isinstance(v, list) else v
+                for k, v in self._sim.stats.items()}
 
     def authority(self) -> dict[str, Any]:
         """Who has control (`rc` or `onboard`), whether it was activated, and the broadcast rates now."""
@@ -671,7 +699,7 @@ class RunningSimulator:
 
 def _sim_config(profile: str, seed: int | None, rates: Mapping[str, int] | None, rc_mode: str,
                 app_id: int | None, key: bytes | None, encrypt: bool, faults: Mapping[str, float] | None,
-                implausible: bool, wrong_profile: str | None) -> SimConfig:
+                implausible: bool, wrong_profile: str | None, bugs: Sequence[str]) -> SimConfig:
     items = rules.profile(_profile(profile)).flag_bits
     hz = sorted(set(rules.hz_of_code().values()))
     for item, rate in (rates or {}).items():
@@ -693,16 +721,18 @@ def _sim_config(profile: str, seed: int | None, rates: Mapping[str, int] | None,
             raise InputError(f"faults: {name}={p!r}: want one of {', '.join(FAULTS)} and a probability 0..1")
     if wrong_profile is not None:
         _profile(wrong_profile)
+    if isinstance(bugs, str) or any(b not in BUGS for b in bugs):
+        raise InputError(f"bugs: {bugs!r}: want a list of names of {', '.join(BUGS)}")
     return SimConfig(profile=profile, seed=seed, app_id=app_id, key=key, encrypt=encrypt, rc_mode=rc_mode,
                      faults=dict(faults or {}), implausible=implausible, wrong_profile=wrong_profile,
-                     rates=dict(rates) if rates else None)
+                     rates=dict(rates) if rates else None, bugs=tuple(dict.fromkeys(bugs)))
 
 
 @contextmanager
 def simulator(profile: str = SimConfig.profile, *, seed: int | None = None, rates: Mapping[str, int] | None = None,
               rc_mode: str = "F", app_id: int | None = None, key: bytes | None = None, encrypt: bool = False,
               faults: Mapping[str, float] | None = None, implausible: bool = False,
-              wrong_profile: str | None = None) -> Iterator[RunningSimulator]:
+              wrong_profile: str | None = None, bugs: Sequence[str] = ()) -> Iterator[RunningSimulator]:
     """`osdkc sim` in a background thread of this process, on a pseudo-terminal.
 
     Yields a RunningSimulator whose `url` a client opens; the simulator
@@ -718,9 +748,11 @@ def simulator(profile: str = SimConfig.profile, *, seed: int | None = None, rate
     per broadcast frame for each fault (noise, bitflip, drop_bytes,
     truncate, bad_crc, duplicate), reproducible with `seed`; `implausible`
     broadcasts implausible values; `wrong_profile` broadcasts in another
-    profile's layout.
+    profile's layout; `bugs` plants firmware bugs (`osdkc sim --bug`,
+    docs/ACCEPTANCE.md), which the stats record when they trigger.
     """
-    cfg = _sim_config(profile, seed, rates, rc_mode, app_id, key, encrypt, faults, implausible, wrong_profile)
+    cfg = _sim_config(profile, seed, rates, rc_mode, app_id, key, encrypt, faults, implausible, wrong_profile,
+                      bugs)
     try:
         transport = PtyTransport()
     except OSError as e:

@@ -84,6 +84,20 @@ def _version() -> str:
         return "unknown version"
 
 
+class _VersionAction(argparse.Action):
+    """--version: also says which decoder `osdkc decode` and the API run (the
+    native accelerator or pure Python, and why), which only then is looked up."""
+
+    def __call__(self, parser, namespace, values, option_string=None) -> NoReturn:  # type: ignore[override]
+        accel = importlib.import_module("osdk_conformance.reference.accel")  # only for --version (start-up)
+        try:
+            decoder = accel.describe()
+        except UsageError as e:
+            decoder = str(e)
+        print(f"osdkc {_version()} ({where_from()}; decoder: {decoder})")
+        parser.exit(0)
+
+
 def _selected(argv: Sequence[str]) -> tuple[str, ...]:
     """The command words of a command line: what to load before parsing it."""
     return tuple(a for a in argv if not a.startswith("-"))[:2]
@@ -103,7 +117,8 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     words = None if argv is None else _selected(argv)
     ap = Parser(prog="osdkc",
                 description="Specification and conformance kit for the DJI Onboard SDK OPEN serial protocol.")
-    ap.add_argument("--version", action="version", version=f"osdkc {_version()} ({where_from()})")
+    ap.add_argument("--version", action=_VersionAction, nargs=0,
+                    help="show the version, where the kit runs from and which decoder it uses, and exit")
     top = _subparsers(ap, "command", "COMMAND")
     groups: dict[str, argparse._SubParsersAction] = {}
     for cmd in COMMANDS:

@@ -461,6 +461,19 @@ def test_the_simulator_broadcasts_on_its_port_and_stops_when_the_block_ends() ->
         serial.Serial(url, timeout=0.1).close()
 
 
+def test_a_planted_bug_triggers_and_the_stats_say_so() -> None:
+    with api.simulator(A3, bugs=["unknown-cmd-silence"]) as sim:
+        read_frames(sim.url, A3, 1)
+        with serial.Serial(sim.url, timeout=0.1) as port:
+            port.write(api.encode_frame(cmd_set=0x7E, cmd_id=0x01, value=b"", session=2, seq=9))
+            end = time.monotonic() + 5
+            while time.monotonic() < end and not sim.stats()["bug_triggers"]["unknown-cmd-silence"]:
+                port.read(4096)
+        stats = sim.stats()
+    assert stats["bugs"] == ["unknown-cmd-silence"] and stats["bug_triggers"] == {"unknown-cmd-silence": 1}
+    assert stats["bug_events"][0]["bug"] == "unknown-cmd-silence"
+
+
 def test_the_simulator_stops_when_the_block_raises() -> None:
     before = len(sim_threads())
     with pytest.raises(ZeroDivisionError):
@@ -482,6 +495,8 @@ def test_the_simulator_stops_when_the_block_raises() -> None:
     ({"key": b"k"}, "32 bytes"),
     ({"app_id": -1}, "app_id must be an integer"),
     ({"wrong_profile": "m100"}, "unknown profile"),
+    ({"bugs": "long-frame-hang"}, "bugs: 'long-frame-hang': want a list"),
+    ({"bugs": ["segfault"]}, "bugs: ['segfault']"),
 ])
 def test_bad_simulator_arguments_are_input_errors_before_it_starts(kwargs, message) -> None:
     before = len(sim_threads())

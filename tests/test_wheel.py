@@ -68,6 +68,33 @@ def osdkc(installed, *argv: str, timeout: float = 600) -> subprocess.CompletedPr
 def test_it_runs_from_the_installed_package(installed) -> None:
     out = ok(osdkc(installed, "--version"))
     assert "installed at" in out and str(ROOT) not in out
+    assert "decoder: native (" in out  # compiled at install: this machine has gcc
+
+
+def test_the_installed_accelerator_conforms(installed) -> None:
+    out = ok(osdkc(installed, "run", "--impl", "accel", "--profile", "m100-fw2.3", "--no-progress"))
+    assert "CONFORMS for decode_frame, decode_payload, decode_stream" in out
+
+
+def test_without_a_compiler_the_install_goes_on_in_pure_python(wheel, tmp_path) -> None:
+    sdist = next(wheel.parent.glob("*.tar.gz"))
+    venv = tmp_path / "venv"
+    ok(run([sys.executable, "-m", "venv", venv], cwd=tmp_path))
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
+    env["CC"] = "false"  # the C compiler fails, as a missing one does
+    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "--no-cache-dir", "-c",
+            CONSTRAINTS, sdist], cwd=tmp_path, env=env))
+    env["XDG_CACHE_HOME"] = str(tmp_path / "cache")
+    out = ok(run([venv / "bin/osdkc", "--version"], cwd=tmp_path, env=env))
+    assert "decoder: pure Python (no native decoder" in out
+    wf = next(w for w in WORKED_FRAMES if w.profile == "a3-fw3.1" and "battery" in w.name)
+    ok(run([venv / "bin/osdkc", "decode", "--profile", wf.profile, "--hex", wf.hex], cwd=tmp_path, env=env))
+    env["OSDKC_ACCEL"] = "1"
+    proc = run([venv / "bin/osdkc", "decode", "--profile", wf.profile, "--hex", wf.hex], cwd=tmp_path, env=env)
+    assert proc.returncode == 2 and "native decoder is not installed" in proc.stderr
+    proc = run([venv / "bin/osdkc", "run", "--impl", "all", "--filter", "worked", "--no-progress"],
+               cwd=tmp_path, env={**env, "OSDKC_ACCEL": ""})
+    assert "not run: accel: the native decoder was not compiled" in proc.stdout
 
 
 def test_decode(installed) -> None:

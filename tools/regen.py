@@ -15,6 +15,7 @@ Targets and where they go, relative to generated/:
   java        java/osdk_kaitai/        Kaitai, package osdk_kaitai
   go          go/osdk_kaitai/          Kaitai, package osdk_kaitai (+ go/go.mod)
   c           c/                       tools/cgen: C99 decoder, no heap
+  cpython     cpython/                 tools/cgen: its value model as Python objects (the accelerator)
   tables      tables/osdk_tables.json  rules and value-model tables
 
 --check regenerates into a scratch directory and fails (exit 1) when the
@@ -101,14 +102,23 @@ def gen_go(out: Path) -> None:
     _load_tool("osdk_tables_tool", TOOLS / "tables.py").write_go_types(out / "osdk_kaitai")
 
 
-def gen_c(out: Path) -> None:
+def _cgen(out: Path, target: str) -> None:
     cgen = TOOLS / "cgen" / "generate.py"
     if not cgen.exists():
         raise SystemExit("regen: tools/cgen/generate.py is missing")
-    proc = subprocess.run([sys.executable, str(cgen), "--out", str(out)], capture_output=True, text=True)
+    proc = subprocess.run([sys.executable, str(cgen), "--out", str(out), "--target", target],
+                          capture_output=True, text=True)
     if proc.returncode != 0:
         sys.stderr.write(proc.stdout + proc.stderr)
         raise SystemExit("regen: the C generator failed")
+
+
+def gen_c(out: Path) -> None:
+    _cgen(out, "c")
+
+
+def gen_cpython(out: Path) -> None:
+    _cgen(out, "cpython")
 
 
 def gen_tables(out: Path) -> None:
@@ -122,6 +132,7 @@ TARGETS: dict[str, tuple[Path, Callable[[Path], None]]] = {
     "java": (Path("java"), gen_java),
     "go": (Path("go"), gen_go),
     "c": (Path("c"), gen_c),
+    "cpython": (Path("cpython"), gen_cpython),
     "tables": (Path("tables"), gen_tables),
 }
 

@@ -40,14 +40,17 @@ class Child:
         return lines[-1] if lines else ""
 
 
-def run(argv: list[str], timeout: float, peak_rss: bool = False) -> Child:
-    """`argv` with no input, output to temporary files (no pipe can fill up), reaped with os.wait4."""
+def run(argv: list[str], timeout: float, peak_rss: bool = False, env: dict[str, str] | None = None,
+        discard_stdout: bool = False) -> Child:
+    """`argv` with no input, output to temporary files (no pipe can fill up), reaped with os.wait4.
+    `env` is added to this process's environment; `discard_stdout` sends the output to /dev/null
+    (a command whose output is the work, timed without keeping a gigabyte of it)."""
     if peak_rss and not PEAK_RSS_BIN.exists():
         raise UsageError(f"{PEAK_RSS_BIN} is missing; run `make setup` (it builds conformance/baseline)")
     with tempfile.TemporaryDirectory(prefix="osdkc-bench-") as tmp:
         usage_file = Path(tmp) / "usage"
         full = [str(PEAK_RSS_BIN), str(usage_file), *argv] if peak_rss else argv
-        child = _run(full, timeout, Path(tmp))
+        child = _run(full, timeout, Path(tmp), {**os.environ, **env} if env else None, discard_stdout)
         child.argv = argv
         if peak_rss and child.code is not None:
             try:
@@ -59,12 +62,12 @@ def run(argv: list[str], timeout: float, peak_rss: bool = False) -> Child:
     return child
 
 
-def _run(argv: list[str], timeout: float, tmp: Path) -> Child:
+def _run(argv: list[str], timeout: float, tmp: Path, env: dict[str, str] | None, discard_stdout: bool) -> Child:
     with open(tmp / "stdout", "w+b") as out, open(tmp / "stderr", "w+b") as err:
         start = time.monotonic()
         try:
-            proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=out, stderr=err, cwd=ROOT,
-                                    start_new_session=True)
+            proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL if discard_stdout else out,
+                                    stderr=err, cwd=ROOT, start_new_session=True, env=env)
         except OSError as e:
             return Child(argv, None, "", "", 0.0, 0.0, 0, f"cannot start {argv[0]}: {e.strerror or e}")
         problem = ""

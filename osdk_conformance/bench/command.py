@@ -6,6 +6,9 @@ Sections (`--only`, default all, in this order):
   (conformance/baseline/) decode each corpus (corpus.py) in their bench
   mode; frames/s, MB/s, peak RSS and the ratio to the baseline of the same
   run; the counts each reports must be the corpus's (bench_decode).
+- api: the one-hour a3-fw3.1 corpus decoded into Python values through
+  the public API, and by `osdkc decode` into JSON lines, with the native
+  accelerator and with pure Python (api_decode.py).
 - run: wall and CPU time of `osdkc run --impl all`.
 - fuzz: executions per second of `osdkc fuzz --impl all` (fixed examples and seed).
 - acceptance: CPU use of the acceptance receiver at 100 Hz (`osdkc soak --json`).
@@ -29,15 +32,16 @@ import sys
 import time
 from pathlib import Path
 
-from osdk_conformance.bench import corpus as bench_corpus, decode as bench_decode, reliability as bench_reliability, report as bench_report, sections as bench_sections
+from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, reliability as bench_reliability, report as bench_report, sections as bench_sections
 from osdk_conformance.bench.corpus import CORPORA
 from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
+from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int, probability
 
-SECTIONS = ("decode", "run", "fuzz", "acceptance", "reliability")
-DEFAULT_SECTIONS = SECTIONS[:4]
+SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "reliability")
+DEFAULT_SECTIONS = SECTIONS[:5]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
     "fuzz_examples": (2000, 200),
@@ -159,6 +163,12 @@ def run_bench(args: argparse.Namespace) -> int:
     if "decode" in sections:
         _log(f"decode: {len(corpora)} corpora x {len(impls)} implementations, up to {args.repeats} runs each")
         result["decode"] = bench_decode.measure(corpora, impls, args.repeats, args.timeout, args.budget)
+    if "api" in sections:
+        hour = next((c for c in corpora if c.name == HOUR_CORPUS), None) if "decode" in sections else None
+        if hour is None:
+            hour = bench_corpus.corpus(HOUR_CORPUS, args.corpus_seconds or (QUICK_CORPUS_SECONDS if args.quick else None))
+        _log(f"api: {hour.name} through the Python API and osdkc decode, native and pure Python")
+        result["api"] = bench_api.measure(hour, args.timeout)
     if "run" in sections:
         _log("run: osdkc run --impl all")
         result["run"] = bench_sections.conformance_run(args.timeout)
@@ -191,7 +201,7 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("run", "fuzz", "acceptance", "reliability") if s in result)
+    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "reliability") if s in result)
 
 
 def _log(text: str) -> None:

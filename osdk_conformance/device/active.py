@@ -352,7 +352,7 @@ class ActiveRun:
             with self.an.lock:
                 ci = self.an.latest.get("control_info")
             if ci and ci[0] > time.time() - 0.3:
-                seen.append(int(ci[1].control_device))
+                seen.append(ci[1]["control_device"]["value"])
                 if seen[-1] == want:
                     break
         return seen

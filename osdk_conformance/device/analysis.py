@@ -9,6 +9,12 @@ the commands sent, and "epochs": spans of time with one set of configured
 broadcast rates (profile defaults, then whatever an acknowledged set
 frequency command asked for). The functions of checks.py
 turn this into Results.
+
+Payloads are decoded by reference/decode.py's `payload_body` (the native
+decoder when it is installed, else Construct), so the values kept in
+`latest` and handed to `on_broadcast` are the JSON value model
+(docs/VALUE-MODEL.md): dicts, floats as {"f32"/"f64": hex, "value": ...},
+enums as {"value": int, "name": ...}.
 """
 from __future__ import annotations
 
@@ -21,10 +27,8 @@ from osdk_conformance.core.errors import one_line
 from osdk_conformance.core.deframe import HEADER_LEN, Deframer, Frame, Garbage, Rejected
 from osdk_conformance.core.rules import default_rules, hz_of_code
 from osdk_conformance.core.wire import open_frame
-from osdk_conformance.reference.decode import classify
+from osdk_conformance.reference.decode import DecodeFailure, payload_body
 from osdk_conformance.sim.simulator import quaternion_to_euler
-from osdk_construct.compiled import parse
-from osdk_construct.payload import osdk_payload
 
 HZ_OF_CODE = hz_of_code()
 CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
@@ -71,12 +75,10 @@ class Analyzer:
                  flight_status_enum: str | None = None) -> None:
         rules = default_rules()
         self.rules = rules
-        self.profile_name = profile
         self.prof = rules.profile(profile)
         self.key = key
-        self._payload = osdk_payload
-        self._parse = parse  # compiled where safe: at 100 Hz the interpreter alone costs ~5% of a core
-        self._bcast = osdk_payload(2, 0, False, profile)
+        # the native decoder when it is installed: about a tenth of Construct's time per broadcast frame
+        self._body = payload_body(profile)
         self.lock = threading.RLock()
         self.ack_cond = threading.Condition(self.lock)
         self.rx_deframer = Deframer()
@@ -123,6 +125,8 @@ class Analyzer:
                            for ch, r in rc.items()]
         self.control_devices = rules.enum("control_device")
         self.cur_modes = rules.enum("cur_mov_control_mode")
+        # item -> (arrival time, value): floats as numbers for attitude (deg), the vectors and position,
+        # the value model for time_stamp, rc and control_info
         self.latest: dict[str, tuple[float, Any]] = {}
         self.traces: dict[str, list[tuple]] = {"attitude": [], "velocity": [], "position": []}
         # commands sent and their ACKs
@@ -232,14 +236,16 @@ class Analyzer:
         self.cmd_frames[name] = self.cmd_frames.get(name, 0) + 1
         if name != "broadcast":
             try:
-                self._parse(self._payload(op.cmd_set, op.cmd_id, False, self.profile_name), op.value)
+                self._body(op.value, op.cmd_set, op.cmd_id, False)
             except Exception as e:
-                self._decode_error(_error_class(e), f"command {op.cmd_set:#04x}/{op.cmd_id:#04x}: {one_line(e)}")
+                cls, detail = _failure(e)
+                self._decode_error(cls, f"command {op.cmd_set:#04x}/{op.cmd_id:#04x}: {detail}")
             return
         try:
-            data = self._parse(self._bcast, op.value).body.data
+            data = self._body(op.value, 2, 0, False)["data"]
         except Exception as e:
-            self._decode_error(_error_class(e), f"broadcast seq {op.seq}, {len(op.value)} bytes: {one_line(e)}")
+            cls, detail = _failure(e)
+            self._decode_error(cls, f"broadcast seq {op.seq}, {len(op.value)} bytes: {detail}")
             if len(self.undecoded_broadcasts) < 200:
                 self.undecoded_broadcasts.append(op.value)
             return
@@ -249,7 +255,7 @@ class Analyzer:
             self.duplicates += 1
         self.bcast_raw_prev = raw
         ts = data.get("time_stamp")
-        clock = self._fc_clock(ts.time) if ts is not None else None
+        clock = self._fc_clock(ts["time"]) if ts is not None else None
         for bit, item in enumerate(self.prof.flag_bits):
             if flags >> bit & 1:
                 self.item_times[item].append(t)
@@ -269,7 +275,7 @@ class Analyzer:
         f = self.findings
         ts = d.get("time_stamp")
         if ts is not None:
-            ticks, prev = ts.time, self._prev_ticks
+            ticks, prev = ts["time"], self._prev_ticks
             if prev is not None:
                 back = (ticks - prev) % (1 << 32) > (1 << 31)
                 f["time_stamp"].add(not back, lambda: f"t={t:.3f}: time {ticks} after {prev}")
@@ -277,7 +283,7 @@ class Analyzer:
             self.latest["time_stamp"] = (t, ts)
         quat = d.get("quaternion")
         if quat is not None:
-            q = [float(quat["q0"]), float(quat["q1"]), float(quat["q2"]), float(quat["q3"])]
+            q = [_float(quat["q0"]), _float(quat["q1"]), _float(quat["q2"]), _float(quat["q3"])]
             norm = math.sqrt(sum(c * c for c in q))
             f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, lambda: f"t={t:.3f}: |q| = {norm:.6g}")
             if all(math.isfinite(c) for c in q):
@@ -287,16 +293,16 @@ class Analyzer:
         for item, keys in _VECTOR_ITEMS:
             v = d.get(item)
             if v is not None:
-                vals = [float(v[k]) for k in keys]
+                vals = [_float(v[k]) for k in keys]
                 f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: {item} {vals}")
                 self.latest[item] = (t, vals)
                 if item == "velocity":
                     self.traces["velocity"].append((t, *vals))
         pos = d.get("position")
         if pos is not None:
-            vals = [float(pos["latitude"]), float(pos["longitude"]), float(pos["altitude"]), float(pos["height"])]
+            vals = [_float(pos["latitude"]), _float(pos["longitude"]), _float(pos["altitude"]), _float(pos["height"])]
             f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: position {vals}")
-            health = pos.gps_health
+            health = pos["gps_health"]
             f["gps_health"].add(0 <= health <= 5, lambda: f"t={t:.3f}: gps_health {health}")
             self.latest["position"] = (t, vals)
             self.traces["position"].append((t, *vals))
@@ -322,10 +328,11 @@ class Analyzer:
             self.latest["rc"] = (t, rc)
         ci = d.get("control_info")
         if ci is not None:
-            dev = int(ci.control_device)
+            dev = ci["control_device"]["value"]
             bad = [] if dev in self.control_devices else [f"control device {dev}"]
-            if ci.get("cur_mov_control_mode") is not None and int(ci.cur_mov_control_mode) not in self.cur_modes:
-                bad.append(f"cur_mov_control_mode {int(ci.cur_mov_control_mode)}")
+            mode = ci.get("cur_mov_control_mode")
+            if mode is not None and mode["value"] not in self.cur_modes:
+                bad.append(f"cur_mov_control_mode {mode['value']}")
             f["control_info"].add(not bad, lambda: f"t={t:.3f}: " + ", ".join(bad) + " not defined")
             self.latest["control_info"] = (t, ci)
 
@@ -393,12 +400,17 @@ class Analyzer:
             return self.acks.get((session, seq))
 
 
-def _error_class(exc: Exception) -> str:
-    import construct
+def _failure(exc: Exception) -> tuple[str, str]:
+    """Error class and detail of a payload that did not decode; any other
+    exception (a bug of ours) is "undecodable", so the receiver goes on."""
+    if isinstance(exc, DecodeFailure):
+        return exc.error_class, exc.detail
+    return "undecodable", one_line(exc)
 
-    if isinstance(exc, construct.ConstructError):
-        return classify(exc)
-    return "undecodable"
+
+def _float(m: dict) -> float:
+    """A float of the value model as a number; float() reads "NaN" and "Infinity" too."""
+    return float(m["value"])
 
 
 def percentile(values: list[float], p: float) -> float:

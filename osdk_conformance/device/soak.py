@@ -58,7 +58,7 @@ def run_soak(args: argparse.Namespace) -> int:
                 ts = data.get("time_stamp")
                 if ts is not None and ts.get("nano_time") is not None:
                     now = time.monotonic_ns() & 0xFFFFFFFF
-                    latencies.append(((now - ts.nano_time) & 0xFFFFFFFF) / 1e6)
+                    latencies.append(((now - ts["nano_time"]) & 0xFFFFFFFF) / 1e6)
 
             an.on_broadcast = on_broadcast
             port = Port(url, args.baud, an, None)

@@ -5,7 +5,8 @@ child process speaking conformance/PROTOCOL.md under the supervision of
 osdk_conformance.harness.testee, exactly as in `osdkc run`. Hypothesis generates
 requests for the decoding operations (decode_stream, decode_frame,
 decode_payload, classify_control_mode, check_movement_control) and every
-testee answers each one. Inputs are mostly structured: valid values and
+testee that claims the operation (capabilities) answers each one; an
+operation two or more testees claim is fuzzed. Inputs are mostly structured: valid values and
 frames built with the Construct spec (osdk_construct.build_frame,
 encode_movement_control; broadcast payloads sized by their flag word from
 rules.yaml), then mutated (bit flips, header bit flips with the CRCs made
@@ -390,6 +391,10 @@ class Disagreement(Exception):
         return f"{self.op} ({self.profile}): {self.reason}"
 
 
+# The place of an answer a testee was not asked for: the operation is not among its capabilities.
+NOT_CLAIMED = {"ok": False, "unsupported": True, "detail": "operation not claimed: not asked"}
+
+
 @dataclass
 class OpStats:
     examples: int = 0
@@ -497,13 +502,19 @@ def fuzz(fuzzees: Sequence[Fuzzee], *, ops: Sequence[str] | None = None, profile
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hypothesis_seed
 
-    common_ops = [op for op in FUZZ_OPS if all(op in f.caps.operations for f in fuzzees)]  # type: ignore[attr-defined]
+    # An operation is fuzzed among the testees that claim it, when two or more
+    # do: one that only decodes (accel) must not take the others' control
+    # mode and movement checks out of `fuzz --impl all`.
+    claimants = {op: [i for i, f in enumerate(fuzzees) if op in f.caps.operations]  # type: ignore[attr-defined]
+                 for op in FUZZ_OPS}
+    fuzzable = [op for op in FUZZ_OPS if len(claimants[op]) >= 2]
     common_profiles = [p for p in PROFILES if all(p in f.caps.profiles for f in fuzzees)]  # type: ignore[attr-defined]
-    ops = [op for op in (ops or common_ops) if op in common_ops]
+    ops = [op for op in (ops or fuzzable) if op in fuzzable]
     profiles = [p for p in (profiles or common_profiles) if p in common_profiles]
     if not ops or not profiles:
-        raise UsageError("the testees have no fuzzable operation and profile in common "
-                         f"(operations {', '.join(common_ops) or 'none'}; profiles {', '.join(common_profiles) or 'none'})")
+        raise UsageError("the testees have no fuzzable operation and profile in common (an operation needs two "
+                         f"testees that claim it; operations {', '.join(fuzzable) or 'none'}; "
+                         f"profiles {', '.join(common_profiles) or 'none'})")
     if seed is None:
         seed = random.SystemRandom().randrange(1 << 32)
     strategy = _strategies(profiles, ops)
@@ -514,18 +525,20 @@ def fuzz(fuzzees: Sequence[Fuzzee], *, ops: Sequence[str] | None = None, profile
     def check(example) -> None:
         op, profile, inp = example
         request = {"op": op, "id": f"fuzz.{counter['n']}", "profile": profile, **inp}
+        askers = claimants[op]
         t0 = time.perf_counter()
-        answers = [_ask(f, request) for f in fuzzees]
+        answers = [_ask(f, request) if i in askers else dict(NOT_CLAIMED) for i, f in enumerate(fuzzees)]
         stats[op].seconds += time.perf_counter() - t0
         stats[op].examples += 1
         counter["n"] += 1
-        if any(a.get("unsupported") is True for a in answers):
+        if any(answers[i].get("unsupported") is True for i in askers):
             return
-        d = disagreement(op, profile, inp, answers)
+        d = disagreement(op, profile, inp, [answers[i] for i in askers])
         if d is not None:
             if counter["found_at"] is None:
                 counter["found_at"] = counter["n"]
-            raise Disagreement(op, profile, inp, answers, *d)
+            reason, (a, b) = d
+            raise Disagreement(op, profile, inp, answers, reason, (askers[a], askers[b]))
 
     start = time.monotonic()
     batch = 0

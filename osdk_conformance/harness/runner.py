@@ -50,6 +50,7 @@ from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positi
 from osdk_conformance.core.paths import CHECKOUT, REPORTS, ROOT, needs_checkout
 from osdk_conformance.harness import report, response_schema, vectors
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, STATUSES, XFAIL, XPASS, Result
+from osdk_conformance.reference import accel
 from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
 
 TESTEES = ROOT / "conformance" / "testees"
@@ -66,6 +67,8 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
              "-jar", str(TESTEES / "java" / "target" / "osdk-java-testee.jar")],
     "go": [str(TESTEES / "go" / "bin" / "osdk-go-testee")],
     "c": [str(TESTEES / "c" / "build" / "osdk-c-testee")],
+    # the same generated C decoder inside Python: the accelerator `osdkc decode` and the API use
+    "accel": [sys.executable, str(TESTEES / "accel_testee.py")],
 }
 ALL = "all"
 FAILURE_LISTS = ROOT / "conformance" / "failure_lists"
@@ -81,7 +84,10 @@ def impl_argv(name: str) -> list[str]:
         raise UsageError(f"no bundled implementation {name!r} (known: {', '.join(BUNDLED_IMPLS)})") from None
     for part in argv[1:] if argv[0] in (sys.executable, "node", "java") else argv[:1]:
         if part.startswith("/") and not Path(part).exists():
-            why = needs_checkout(f"the bundled implementation {name!r}") or \
+            why = needs_checkout(f"the bundled implementation {name!r}")
+            why = (f"{why}: clone the repository, run `make setup` there (it builds every bundled testee with "
+                   f"its language's toolchain) and `osdkc run --impl {name}` in it, or run your own build with "
+                   "`osdkc run --testee CMD`") if why else \
                 f"bundled implementation {name!r} is not built ({part} is missing); {BUILD_HINT}"
             raise UsageError(why)
     return argv
@@ -93,14 +99,17 @@ def select_cases(cases: Sequence[Any], profiles: Sequence[str] | None, id_part: 
             and (not id_part or id_part in c.id)]
 
 
-def available_impls() -> tuple[list[str], list[str]]:
-    """(implementations to run, implementations absent). A checkout runs every
-    bundled one (a missing build is its failure); an installed package has
-    only the Python testees, and says so rather than failing the others."""
+def available_impls() -> tuple[list[str], dict[str, str]]:
+    """(implementations to run, {implementation absent: why}). A checkout runs
+    every bundled one (a missing build is its failure); an installed package
+    has only the Python testees, and the accelerator's only when it was
+    compiled at install, and says so rather than failing the others."""
     if CHECKOUT:
-        return list(BUNDLED_IMPLS), []
-    present = [i for i, argv in BUNDLED_IMPLS.items() if argv[0] == sys.executable]
-    return present, [i for i in BUNDLED_IMPLS if i not in present]
+        return list(BUNDLED_IMPLS), {}
+    absent = {i: needs_checkout("it") for i, argv in BUNDLED_IMPLS.items() if argv[0] != sys.executable}
+    if not accel.available():
+        absent["accel"] = "the native decoder was not compiled when the package was installed (no C compiler?)"
+    return [i for i in BUNDLED_IMPLS if i not in absent], absent
 
 
 # ---- failure list ----------------------------------------------------------------
@@ -816,11 +825,11 @@ def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
 
     present, absent = available_impls()
     impls = [i for i in present if i in chosen]
-    absent = [i for i in absent if i in chosen]
+    absent = {i: why for i, why in absent.items() if i in chosen}
     start = time.monotonic()
     print(f"osdkc run: {len(impls)} implementations, {args.jobs} at a time", flush=True)
-    if absent:
-        print(f"not run: {', '.join(absent)}: {needs_checkout('they')}", flush=True)
+    for name, why in absent.items():
+        print(f"not run: {name}: {why}", flush=True)
     with SignalStop() as stop, ThreadPoolExecutor(max_workers=args.jobs) as pool:
         futures = []
         try:

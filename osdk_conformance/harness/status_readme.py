@@ -20,6 +20,8 @@ WHAT = {
     "java": "generated/java (Kaitai) + conformance/testees/java",
     "go": "generated/go (Kaitai) + conformance/testees/go",
     "c": "generated/c (tools/cgen) + conformance/testees/c",
+    "accel": "generated/c + generated/cpython as a Python extension (osdk_conformance/reference/_accel.c) + "
+             "conformance/testees/accel_testee.py; decoding operations only",
 }
 
 
@@ -34,7 +36,8 @@ def render(status: dict) -> str:
                     f"{st.get('xfail', 0)} | {st.get('skip', 0)} | {verdict} |")
     scope = f" (selection: `{status['selection']}`)" if status.get("selection") else ""
     return "\n".join([BEGIN, "", f"Last `osdkc run --impl all`{scope}; skipped cases are operations an "
-                      "implementation reports as unsupported (the Kaitai targets cannot encode).", "",
+                      "implementation reports as unsupported (the Kaitai targets cannot encode; the native "
+                      "decoder only decodes).", "",
                       *rows, "", END])
 
 

@@ -5,14 +5,21 @@ decoded with the Construct spec for the chosen profile and printed in the
 JSON value model (docs/VALUE-MODEL.md). ACK values are decoded when the
 same stream, or with --direction both the capture's sent bytes, carried the
 command they answer (matched by SEQ and session).
+
+That is the reference, `decode_events`. What `osdkc decode`, the Python
+API and the acceptance receiver run (`stream_events`, `payload_body`) is the
+native accelerator when it is installed (accel.py; OSDKC_ACCEL chooses),
+which gives the same events.
 """
 from __future__ import annotations
 
 import argparse
+import functools
 import re
 import sys
+import threading
 from itertools import chain
-from typing import IO, Any, Iterable, Iterator, Sequence
+from typing import IO, Any, Callable, Iterable, Iterator, NamedTuple, Sequence
 
 import construct
 
@@ -21,8 +28,12 @@ from osdk_conformance.core.capture import CaptureError, CaptureReader, NAMES, is
 from osdk_conformance.core.commands import command_name
 from osdk_conformance.core.deframe import Deframer, Frame, Garbage, Rejected, deframe, header_fields
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
-from osdk_construct.frame import parse_frame
-from osdk_construct.payload import payload
+from osdk_conformance.reference import accel, fastframe, values
+from osdk_conformance.core.rules import profile as load_profile
+from osdk_construct.compiled import parse
+from osdk_construct.enums import profile_value
+from osdk_construct.frame import build_frame, osdk_frame, parse_frame
+from osdk_construct.payload import BODY_BY_KEY, broadcast, payload
 
 READ_SIZE = 64 * 1024
 
@@ -60,15 +71,13 @@ def classify(exc: construct.ConstructError) -> str:
 
 
 class Decoder:
-    def __init__(self, profile: str, models: bool = True) -> None:
-        # models=False leaves each value as Construct parsed it: the testees'
-        # bench mode times decoding, not the value model.
-
+    def __init__(self, profile: str) -> None:
         self._parse_frame = parse_frame
         self._payload = payload
         self.profile = profile
-        self._model = model.from_construct if models else _as_parsed
+        self._model = model.from_construct
         self._pending: dict[tuple[int, int], tuple[int, int]] = {}  # (session, seq) -> (set, id)
+        self._fast = _fast_frames(profile)
 
     def event(self, ev: Frame | Rejected | Garbage) -> dict:
         if isinstance(ev, Garbage):
@@ -83,6 +92,15 @@ class Decoder:
                     "length": len(ev.raw), "raw": ev.raw.hex()}
 
     def _frame(self, ev: Frame) -> dict:
+        fast = self._fast
+        if fast is not None:
+            known = fast.lookup(ev.raw)
+            if known is not None:
+                frame = known.convert(ev.raw)
+                if frame is not None:
+                    if known.session > 0:
+                        self._expect_ack(known.session, frame["seq"], known.cmd)
+                    return {"offset": ev.offset, "kind": "frame", "command": known.command, "frame": frame}
         try:
             parsed = self._parse_frame(ev.raw, self.profile)
         except construct.ConstructError as e:
@@ -111,15 +129,142 @@ class Decoder:
             cmd = (int(data.cmd_set), data.cmd_id)
             out["command"] = command_name(*cmd)
             if parsed.session > 0:
-                self._pending[(parsed.session, parsed.seq)] = cmd
-                if len(self._pending) > 1024:  # bounded: unanswered commands are forgotten
-                    self._pending.pop(next(iter(self._pending)))
+                self._expect_ack(parsed.session, parsed.seq, cmd)
         out["frame"] = frame
         return out
 
+    def _expect_ack(self, session: int, seq: int, cmd: tuple[int, int]) -> None:
+        self._pending[(session, seq)] = cmd
+        if len(self._pending) > accel.PENDING_LIMIT:  # bounded: unanswered commands are forgotten
+            self._pending.pop(next(iter(self._pending)))
 
-def _as_parsed(parsed: Any) -> Any:
-    return parsed
+
+class _Known(NamedTuple):
+    """A command frame layout with a converter straight to its model (fastframe.py)."""
+
+    convert: Callable[[bytes], dict | None]
+    command: str
+    cmd: tuple[int, int]
+    session: int
+
+
+class _FastFrames:
+    """The fast converters of one profile's frames, by the bytes that decide their layout.
+
+    Those bytes are the ones the layout of a broadcast frame consults
+    (fastframe.specialize): the header's start byte and bit fields, the
+    command set and id, the flag word. A layout gets its converter when its
+    bytes have come COMPILE_AFTER + 1 times (a one-off layout, as random
+    data makes, is cheaper to interpret), and only when the frame is a
+    plain broadcast (not an ACK, encrypted, header-only or another
+    command), its converter consulted no other bytes, and it gives for that
+    frame the model the interpreter gives. Any other frame, and any frame
+    of a layout refused, is the interpreter's: so are all errors."""
+
+    COMPILE_AFTER = 2
+    MAX_LAYOUTS = 4096
+    """Layouts kept, compiled or refused; then they are forgotten, all at once."""
+    MAX_COMPILED = 256
+    """Compiled layouts among them (some 14 kB each); later ones are refused until then.
+    A capture has a few: one per flag word its item rates make, in each session."""
+
+    def __init__(self, profile: int) -> None:
+        self.profile = profile
+        self.frame = osdk_frame(profile)
+        k = next(k for k, body in BODY_BY_KEY.items() if body is broadcast)
+        cmd_set, cmd_id = self.cmd = (k >> 8 & 0xFF, k & 0xFF)
+        data = values.broadcast_data(profile, values.items(profile), {})
+        sample = build_frame(cmd_set=cmd_set, cmd_id=cmd_id,
+                             value=payload(cmd_set, cmd_id, False, profile).build({"body": {"data": data}}))
+        found = fastframe.specialize(self.frame, sample)
+        _event_fields(found.context)
+        self.positions = frozenset(found.consulted)
+        self.key = fastframe.key_function(self.positions)
+        self.known: dict[bytes, _Known | None] = {}
+        self.seen: dict[bytes, int] = {}
+        self.compiled = 0
+        self.lock = threading.Lock()
+
+    def lookup(self, raw: bytes) -> _Known | None:
+        key = self.key(raw)
+        try:
+            return self.known[key]
+        except KeyError:
+            pass
+        with self.lock:
+            if key in self.known:
+                return self.known[key]
+            if len(self.known) >= self.MAX_LAYOUTS:
+                self.known.clear()  # bounded; the layouts still in use are compiled again
+                self.compiled = 0
+            if len(self.seen) >= 4 * self.MAX_LAYOUTS:
+                self.seen.clear()
+            uses = self.seen[key] = self.seen.get(key, 0) + 1
+            if uses <= self.COMPILE_AFTER:
+                return None
+            try:
+                known = self._compile(raw) if self.compiled < self.MAX_COMPILED else None
+            except fastframe.Short:
+                return None  # this frame is cut short, not its layout: the next one may do
+            del self.seen[key]
+            self.known[key] = known
+            self.compiled += known is not None
+            return known
+
+    def _compile(self, raw: bytes) -> _Known | None:
+        try:
+            parsed = parse_frame(raw, self.profile)
+        except construct.ConstructError:
+            try:
+                fastframe.specialize(self.frame, raw, self.positions)  # Short: only this frame is cut short
+            except fastframe.Short:
+                raise
+            except fastframe.NotFast:
+                pass
+            return None
+        data = parsed.get("data")
+        if parsed.len == 12 or not isinstance(data, dict) or parsed.is_ack:
+            return None
+        cmd = (int(data.cmd_set), data.cmd_id)
+        if cmd != self.cmd:
+            # Other commands' layouts would be keyed by their values' first
+            # bytes too: one layout per value, each compiled for a few frames.
+            return None
+        try:
+            found = fastframe.specialize(self.frame, raw, self.positions)
+        except fastframe.NotFast:
+            return None
+        _event_fields(found.context)
+        if not found.consulted <= self.positions:
+            return None
+        got = found.convert(raw)
+        if got is None or model.dumps(got) != model.dumps(model.from_construct(parsed)):
+            return None
+        return _Known(found.convert, command_name(*cmd), cmd, parsed.session)
+
+
+def _event_fields(context: Any) -> None:
+    """Read, through a specialisation's context, the fields Decoder._frame
+    takes from a parsed frame besides its model, so that they count as
+    consulted: a fast layout must fix them."""
+    data = context["data"]
+    context["len"], context["is_ack"], context["session"], data["cmd_set"], data["cmd_id"]  # noqa: B018 - read for the trace
+
+
+@functools.lru_cache(maxsize=None)
+def _fast_frames_of(value: int) -> _FastFrames | None:
+    try:
+        return _FastFrames(value)
+    except (fastframe.NotFast, LookupError, ValueError, construct.ConstructError):
+        return None  # a profile whose broadcast this cannot specialise: all its frames are interpreted
+
+
+def _fast_frames(profile: str) -> _FastFrames | None:
+    try:
+        value = profile_value(profile)
+    except (ValueError, KeyError):
+        return None
+    return _fast_frames_of(value)
 
 
 def parse_hex(text: str) -> bytes:
@@ -171,8 +316,8 @@ def received_bytes(chunks: Iterable[bytes], name: str = "capture") -> Iterator[b
     return (data for _, data in capture_pieces(chunks, frozenset({"rx"}), name))
 
 
-def decode_events(chunks: Iterable[bytes], profile: str, models: bool = True) -> Iterator[dict]:
-    decoder = Decoder(profile, models)
+def decode_events(chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
+    decoder = Decoder(profile)
     for ev in deframe(chunks):
         yield decoder.event(ev)
 
@@ -193,11 +338,57 @@ def both_directions_events(chunks: Iterable[bytes], profile: str, name: str) -> 
 
 
 def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input") -> Iterator[dict]:
-    """What `osdkc decode` prints for --direction rx, tx or both."""
+    """What `osdkc decode` prints for --direction rx, tx or both: the native
+    decoder's events when it is to run (accel.py), else the reference's."""
+    native = accel.stream(profile)
     if direction == "both":
-        return both_directions_events(chunks, profile, name)
+        if native is None:
+            return both_directions_events(chunks, profile, name)
+        return _native_both(native, capture_pieces(chunks, frozenset({"rx", "tx"}), name))
     pieces = capture_pieces(chunks, frozenset({direction}), name)
-    return decode_events((data for _, data in pieces), profile)
+    if native is None:
+        return decode_events((data for _, data in pieces), profile)
+    return accel.events((data for _, data in pieces), native)
+
+
+def _native_both(native: accel.NativeStream, pieces: Iterable[tuple[str, bytes]]) -> Iterator[dict]:
+    # as both_directions_events: one receiver per direction, one ACK table, rx finished first
+    for direction, data in pieces:
+        yield from native.feed(data, direction)
+    for direction in ("rx", "tx"):
+        yield from native.finish(direction)
+
+
+class DecodeFailure(ValueError):
+    """A payload the decoder rejected: its error class (docs/VALUE-MODEL.md) and a detail for people."""
+
+    def __init__(self, error_class: str, detail: str) -> None:
+        super().__init__(f"{error_class}: {detail}")
+        self.error_class = error_class
+        self.detail = detail
+
+
+def payload_body(profile: str) -> Callable[[bytes, int, int, bool], dict]:
+    """A function giving the model of a payload's body (docs/VALUE-MODEL.md)
+    for (value, cmd_set, cmd_id, is_ack), raising DecodeFailure: the native
+    decoder when it is to run, else the Construct spec."""
+    module = accel.native()
+    if module is not None:
+        value = load_profile(profile).value
+
+        def native_body(data: bytes, cmd_set: int, cmd_id: int, is_ack: bool) -> dict:
+            try:
+                return module.decode_payload(data, cmd_set, cmd_id, is_ack, value)["body"]
+            except module.DecodeError as e:
+                raise DecodeFailure(*e.args) from None
+        return native_body
+
+    def construct_body(data: bytes, cmd_set: int, cmd_id: int, is_ack: bool) -> dict:
+        try:
+            return model.from_construct(parse(payload(cmd_set, cmd_id, is_ack, profile), data))["body"]
+        except construct.ConstructError as e:
+            raise DecodeFailure(classify(e), one_line(e)) from None
+    return construct_body
 
 
 def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:

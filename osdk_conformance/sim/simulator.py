@@ -14,6 +14,8 @@ Fault injection (per broadcast frame, reproducible with --seed): noise
 bytes, bit flips, dropped bytes, truncated frames, bad CRCs, duplicated
 frames, jitter, rate drift, implausible values, another profile's layout,
 a stalled stream, an unplugged-and-back port, a baud rate mismatch.
+Planted firmware bugs (--bug, sim/bugs.py) model receive-path bugs of real
+flight controllers for a device fuzzer to find.
 """
 from __future__ import annotations
 
@@ -47,6 +49,7 @@ from osdk_conformance.core.options import (baud_rate, non_negative_float, non_ne
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode, key_option, open_frame
 from osdk_conformance.reference.values import broadcast_data, cut
+from osdk_conformance.sim.bugs import BUGS, PlantedBugs
 
 R_EARTH = 6378137.0
 G = 9.80665
@@ -412,6 +415,7 @@ class SimConfig:
     hold: bool = False
     rates: dict[str, int] | None = None
     log_broadcast: str | None = None   # JSON lines: SEQ and value (before fault injection) of every broadcast sent
+    bugs: tuple[str, ...] = ()         # planted firmware bugs (sim/bugs.py BUGS); none: a healthy flight controller
 
 
 # A pty counts only the bytes that reached the client's side; bytes the
@@ -463,6 +467,8 @@ class Simulator:
         self.unplugged_until: float | None = None
         self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
         self._current_raw = b""
+        self.boot = self.start   # the time stamp item counts from here; a planted reset moves it
+        self.bugs = PlantedBugs(tuple(cfg.bugs), self.stats, self.start) if cfg.bugs else None
         self.broadcast_log = open(cfg.log_broadcast, "w", buffering=1) if cfg.log_broadcast else None
 
     # ---- broadcast -------------------------------------------------------
@@ -492,7 +498,7 @@ class Simulator:
         q = euler_to_quaternion(v.roll, v.pitch, v.yaw)
         if bad:
             q = tuple(2 * c for c in q)
-        ticks = int(elapsed * 400) & 0xFFFFFFFF
+        ticks = int((now - self.boot) * 400) & 0xFFFFFFFF
         if bad:
             ticks = (0x7FFFFFFF - ticks * 3) & 0xFFFFFFFF
         in_control = self.control == "onboard"
@@ -597,12 +603,56 @@ class Simulator:
     # ---- commands --------------------------------------------------------
 
     def on_bytes(self, data: bytes, now: float) -> None:
+        if self.bugs is not None:
+            self._on_bytes_with_bugs(data, now)
+            return
         for ev in self.deframer.feed(data):
             if isinstance(ev, Frame):
                 self._rx_frame_bytes += len(ev.raw)
                 self.on_frame(ev.raw, now)
             else:
                 self.stats["frames_rejected"] += 1
+
+    def _on_bytes_with_bugs(self, data: bytes, now: float) -> None:
+        """on_bytes with planted bugs: a frame that hangs or reboots the
+        simulator is the last one heard; the bytes after it in this read are
+        lost as to a stalled one."""
+        bugs = self.bugs
+        bugs.fed(data)
+        for ev in self.deframer.feed(data):
+            halted = bugs.overrun_by(ev, now)
+            reboot = False
+            if isinstance(ev, Frame):
+                self._rx_frame_bytes += len(ev.raw)
+                reboot = not halted and bugs.resets_on(ev.raw, now)
+                if not (halted or reboot):
+                    self.on_frame(ev.raw, now)
+            else:
+                self.stats["frames_rejected"] += 1
+            if halted or reboot:
+                self.stats["rx_bytes_discarded"]["stalled"] += bugs.received_after(ev)
+                if reboot:
+                    self._reboot()
+                return
+            bugs.consumed(ev)
+        bugs.overrun_pending(now)
+
+    def _reboot(self) -> None:
+        """What a planted reset loses: the SEQ, the clock, activation,
+        control authority, the rates, the commands, the receive buffer
+        (and a wedged command handler)."""
+        self.seq = 0
+        self.boot = self.bugs.resume_at
+        self.activated = False
+        self.control = "rc"
+        self.pending = None
+        self.onboard_requested = False
+        self.rates = {**self.profile.default_rates_hz, **(self.cfg.rates or {})}
+        self.frame_index = 0
+        self.vehicle.command = None
+        self.last_ack.clear()
+        self.deframer = Deframer()
+        self.bugs.rebooted()
 
     def on_received(self, data: bytes, now: float, stalled: bool) -> None:
         """Bytes read from the host. The line speed is looked at now, when
@@ -646,6 +696,8 @@ class Simulator:
         if op.cmd_set == 0x01 and op.cmd_id == 0x03:
             self.stats["movement_commands"] += 1
             self.stats["movement_commands_encrypted"] += op.encrypted
+        if self.bugs is not None and self.bugs.wedged_by(op, raw, now):
+            return
         if op.session > 0:
             cached = self.last_ack.get(op.session)
             if cached and cached[0] == op.seq and cached[1] == raw:
@@ -725,6 +777,10 @@ class Simulator:
 
     # ---- main loop -------------------------------------------------------
 
+    def _halted(self, now: float) -> bool:
+        """A planted bug keeps the simulator deaf and silent (hung, or rebooting)."""
+        return self.bugs is not None and self.bugs.halted(now)
+
     def _check_speed(self) -> None:
         if self.cfg.baud is None:
             return
@@ -748,12 +804,14 @@ class Simulator:
             if self.unplugged_until is not None and now >= self.unplugged_until:
                 self.t.replug()
                 self.unplugged_until = None
-            stalled = cfg.stall_at is not None and elapsed >= cfg.stall_at
+            stalled = (cfg.stall_at is not None and elapsed >= cfg.stall_at) or self._halted(now)
             rate = self.frame_rate()
             period = 1.0 / (rate * (1.0 + cfg.rate_drift)) if rate > 0 else 0.0
             wait = 0.1
             if self.broadcasting and not stalled and period:
                 wait = max(0.0, min(wait, self.send_at - now))
+            elif self.bugs is not None and self.bugs.resume_at is not None and now < self.bugs.resume_at:
+                wait = min(wait, self.bugs.resume_at - now)   # a planted reset ends on time
             rfds = self.t.read_fds()
             wfds = [rfds[-1]] if self.outbuf and rfds else []
             try:
@@ -767,6 +825,7 @@ class Simulator:
                     self.on_received(data, now, stalled)
             if w:
                 self._flush()
+            stalled = stalled or self._halted(now)   # a planted bug that triggered on what was just read
             self.vehicle.step(now - self.last_step, now)
             self.battery = max(0.0, self.battery - (now - self.last_step) / 60.0)
             self.last_step = now
@@ -838,6 +897,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--unplug-at", type=non_negative_float, metavar="S", help="close the port after S seconds ...")
     f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S", help="... and reopen it S seconds later")
     f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
+    b = ap.add_argument_group("planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)")
+    b.add_argument("--bug", action="append", default=[], choices=tuple(BUGS), metavar="NAME",
+                   help="plant this bug (repeatable; default none). "
+                        + "; ".join(f"{name}: {what}" for name, what in BUGS.items()))
 
 
 # ---- running the simulator as a child process (kit, soak, tests) ----------
@@ -889,7 +952,7 @@ def run_sim(args: argparse.Namespace) -> int:
                     rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
                     unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
-                    log_broadcast=args.log_broadcast)
+                    log_broadcast=args.log_broadcast, bugs=tuple(dict.fromkeys(args.bug)))
     try:
         transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)
     except OSError as e:

@@ -92,6 +92,20 @@ class BitGroup(SelfCompiling, Subconstruct):
         code.append("\n".join(lines))
         return f"{fname}(io, this)"
 
+    def _flat_bits(self) -> tuple[str, tuple[str, ...], list[tuple[str, str, int, Construct]]] | None:
+        """(struct format of the group's little-endian integer, names in ksy
+        order, fields from bit 0 up) for compiled.py to read the group within
+        a merged read; None when the group has checks (they need the context)
+        or is not 1, 2, 4 or 8 bytes."""
+        try:
+            nbytes, fields, checks = self._layout()
+        except NotImplementedError:
+            return None
+        fmt = {1: "B", 2: "H", 4: "I", 8: "Q"}.get(nbytes)
+        if checks or fmt is None:
+            return None
+        return fmt, self.names, fields
+
     def _layout(self) -> tuple[int, list[tuple[str, str, int, Construct]], list]:
         """(bytes, [(name, kind, width, construct)] from bit 0 up, [check functions]) of
         the group as it is now; NotImplementedError (the compiler then keeps
@@ -169,6 +183,11 @@ class _Record(SelfCompiling, Adapter):
         lines += ["    except StopFieldError:", "        pass", "    return result"]
         code.append("\n".join(lines))
         return f"{fname}(io, this)"
+
+    def _flat_struct(self) -> tuple[Struct, dict[str, BitGroup]]:
+        """The Struct and the names of its embedded groups, for compiled.py
+        to read a record of fixed-size fields in one go."""
+        return self.subcon, self.groups
 
     def _decode(self, obj, context, path):
         out = Container()

@@ -75,55 +75,122 @@ def emit(sub: Any, code) -> str:
     return f"{link(code, sub)}._parsereport(io, this, '(compiled)')"
 
 
-def _flat_fields(c: Any) -> list[tuple[str, Any, Any]] | None:
-    """[(name, little-endian FormatField or None when absent, decoding adapter or None)]
-    when `c` is a Struct of named fixed-size fields with nothing that needs
-    its context, else None."""
+def _flat_fields(c: Any) -> list[tuple] | None:
+    """The parts of `c` when it is a Struct (or a construct with `_flat_struct`,
+    the record adapter) of named fixed-size little-endian fields and bit
+    groups with nothing that needs its context, else None. Parts:
+    ("field", name, fmt, decode) with decode None, an IeeeFloat class or an
+    adapter whose _decode needs no context; ("absent", name) for a `when`
+    that is constantly false; ("bits", name or None when embedded, fmt,
+    names, fields) for a bit group (see BitGroup._flat_bits)."""
+    groups: Any = ()
     if type(c) is not construct.Struct:
-        return None
-    fields = []
+        flat_struct = getattr(c, "_flat_struct", None)
+        if flat_struct is None:
+            return None
+        c, groups = flat_struct()
+        if type(c) is not construct.Struct:
+            return None
+    fields: list[tuple] = []
     for sc in c.subcons:
         if not isinstance(sc, construct.Renamed) or not sc.name:
             return None
         f = sc.subcon
+        if sc.name in groups:
+            bits = getattr(f, "_flat_bits", lambda: None)()
+            if bits is None:
+                return None
+            fields.append(("bits", None, *bits))
+            continue
+        if groups and sc.name.startswith("_"):  # a record leaves these out of its value
+            return None
         if isinstance(f, construct.IfThenElse):
             # `when` with a constant condition (a profile variant): present or always None
             if not isinstance(f.condfunc, bool) or f.elsesubcon is not construct.Pass:
                 return None
             if not f.condfunc:
-                fields.append((sc.name, None, None))
+                fields.append(("absent", sc.name))
                 continue
             f = f.thensubcon
-        adapter = None
-        if isinstance(f, construct.Enum) or getattr(f, "decode_needs_no_context", False):
-            adapter, f = f, f.subcon
+        bits = getattr(f, "_flat_bits", None)
+        if bits is not None:
+            bits = bits()
+            if bits is None:
+                return None
+            fields.append(("bits", sc.name, *bits))
+            continue
+        decode = None
+        if getattr(f, "ieee_class", None) is not None:
+            decode, f = f.ieee_class, f.subcon
+        elif isinstance(f, construct.Enum) or getattr(f, "decode_needs_no_context", False):
+            decode, f = f, f.subcon
         if type(f) is not construct.FormatField or not f.fmtstr.startswith("<"):
             return None
-        fields.append((sc.name, f, adapter))
+        fields.append(("field", sc.name, f.fmtstr[1:], decode))
     return fields
 
 
-def _emit_flat(fields: list[tuple[str, Any, Any]], code) -> str:
+def _emit_flat(fields: list[tuple], code) -> str:
     # One read and one unpack for the whole Struct, where construct's code
     # reads and unpacks field by field and builds a context nobody reads.
     # A short read makes unpack raise, where the interpreter raises too.
     n = code.allocateId()
-    fmt = "<" + "".join(f.fmtstr[1:] for _, f, _ in fields if f is not None)
+    fmt = "<" + "".join(part[2] for part in fields if part[0] != "absent")
     code.append(f"flat_{n} = struct.Struct({fmt!r})")
-    names = [f"v{i}" for i, (_, f, _) in enumerate(fields) if f is not None]
-    items = []
-    for i, (name, f, adapter) in enumerate(fields):
-        value = "None" if f is None else f"v{i}"
-        if adapter is not None:
-            value = f"{link(code, adapter)}._decode({value}, None, None)"
-        items.append(f"{name!r}: {value}")
-    unpack = f"    {', '.join(names)}, = flat_{n}.unpack(io.read(flat_{n}.size))" if names else ""
-    code.append(f"""
-        def parse_flat_{n}(io, this):
-        {unpack}
-            return Container({{{', '.join(items)}}})
-    """)
+    names, body, items = [], [], []
+    classes: dict[str, str] = {}
+    for i, part in enumerate(fields):
+        kind, name = part[0], part[1]
+        if kind == "absent":
+            items.append(f"{name!r}: None")
+            continue
+        v = f"v{i}"
+        names.append(v)
+        if kind == "bits":
+            group = _emit_bits(v, part[3], part[4], code, body)
+            if name is None:  # embedded in a record: its fields are the record's
+                items += group
+            else:
+                items.append(f"{name!r}: Container({{{', '.join(group)}}})")
+            continue
+        decode = part[3]
+        if isinstance(decode, type):
+            # an IeeeFloat made without __init__: the value is the unpacked
+            # integer of the float's own width, in range by construction
+            cls = f"ieee_{id(decode)}"
+            if cls not in classes:
+                classes[cls] = f"    {cls} = {link(code, decode)}"  # linked instances are filled in after the module runs
+            body += [f"    f{i} = new_{n}({cls})", f"    f{i}.ieee_bits = {v}"]
+            v = f"f{i}"
+        elif decode is not None:
+            v = f"{link(code, decode)}._decode({v}, None, None)"
+        items.append(f"{name!r}: {v}")
+    if classes:
+        code.append(f"new_{n} = object.__new__")
+    unpack = [f"    {', '.join(names)}, = flat_{n}.unpack(io.read(flat_{n}.size))"] if names else []
+    lines = [f"def parse_flat_{n}(io, this):", *unpack, *classes.values(), *body, f"    return Container({{{', '.join(items)}}})"]
+    code.append("\n".join(lines))
     return f"parse_flat_{n}(io, this)"
+
+
+def _emit_bits(v: str, names: tuple, fields: list, code, body: list[str]) -> list[str]:
+    """Dict items of a bit group read as the integer `v` (first field in the
+    lowest bits), in the group's order; its constant checks go to `body`."""
+    values = {}
+    lsb = 0
+    for name, kind, width, sub in fields:
+        raw = f"({v} >> {lsb} & {(1 << width) - 1})"
+        if kind == "flag":
+            values[name] = f"{raw} == 1"
+        elif kind == "int":
+            values[name] = raw
+        elif kind == "enum":
+            values[name] = f"{link(code, sub)}._decode({raw}, None, None)"
+        else:  # const
+            body += [f"    if {raw} != {sub.value!r}:", "        raise ConstError"]
+            values[name] = raw
+        lsb += width
+    return [f"{name!r}: {values[name]}" for name in names]
 
 
 def value_code(code, value: Any) -> str:

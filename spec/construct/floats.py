@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 import struct
 
-from construct import Adapter, Int32ul, Int64ul
+from construct import Adapter, FormatField, Int32ul, Int64ul
 
 from .compiled import SelfCompiling, emit, link
 
@@ -119,8 +119,27 @@ class _IeeeAdapter(SelfCompiling, Adapter):
     def _decode(self, obj, context, path):
         return self.cls(obj)
 
+    @property
+    def ieee_class(self) -> type[IeeeFloat] | None:
+        """The float class, when the field is the unsigned little-endian
+        integer of the float's width: every value it reads is then in range,
+        and compiled code may make the float without __init__'s check."""
+        fmt = getattr(self.subcon, "fmtstr", None)
+        wanted = {32: ("<I", "<L"), 64: ("<Q",)}.get(self.cls.ieee_width, ())
+        return self.cls if type(self.subcon) is FormatField and fmt in wanted else None
+
     def _emitparse(self, code):
-        return f"{link(code, self)}._decode({emit(self.subcon, code)}, None, None)"
+        cls = self.ieee_class
+        if cls is None:
+            return f"{link(code, self)}._decode({emit(self.subcon, code)}, None, None)"
+        fname = f"parse_ieee_{code.allocateId()}"
+        code.append(f"""
+            def {fname}(bits, new=object.__new__):
+                value = new({link(code, cls)})
+                value.ieee_bits = bits
+                return value
+        """)
+        return f"{fname}({emit(self.subcon, code)})"
 
     def _encode(self, obj, context, path):
         if isinstance(obj, IeeeFloat):

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate the C99 decoder of generated/c/ from spec/*.ksy and the rules.
 
-usage: tools/cgen/generate.py --out DIR
+usage: tools/cgen/generate.py --out DIR [--target c|cpython]
 
 Every ksy type becomes a C struct and an `<type>_parse()` function that
 reads it from a bounds-checked stream over a caller-supplied buffer (no
@@ -13,6 +13,11 @@ streaming deframer, the JSON writer, the rule tables) come from the
 templates in tools/cgen/templates/, filled with values derived from the
 spec (CRC parameters and tables, header layout, receiver checks, control
 mode tables). The output is deterministic.
+
+--target cpython writes, instead, `<type>_to_py()` for every type: the same
+value model built as Python objects (dicts, ints, bools, hex strings), for
+the native accelerator of osdk_conformance (osdk_conformance/reference/_accel.c). It
+is kept apart from generated/c/, which needs nothing beyond libc.
 """
 from __future__ import annotations
 
@@ -46,6 +51,9 @@ FRAME_TYPE = "osdk_frame"
 
 # docs/VALUE-MODEL.md, error classes, in the table's order; the classes of
 # error_by_field are added if one is missing here.
+# Keys of the value model that are not field ids (docs/VALUE-MODEL.md).
+PY_MODEL_KEYS = ["value", "name", "f32", "f64"]
+
 ERROR_CLASSES = [
     "bad_sof", "bad_crc16", "bad_version", "reserved_bits", "impossible_length", "bad_encryption",
     "bad_session", "bad_crc32", "truncated_frame", "truncated_payload", "length_mismatch", "undecodable",
@@ -678,7 +686,7 @@ class Generator:
 
     def _switch_case(self, L: Lines, t: TypeSpec, f: FieldSpec, lval: str, m: str, ref: TypeRef, stream: str) -> None:
         L.depth += 1
-        L(f"osdk_status_t st;")
+        L("osdk_status_t st;")
         L(f"{lval}.tag = {self.switch_tag(t, f, m)};")
         L(f"st = {ref.target.cname}_parse({self.call_args(t, ref, stream, lval + '.u.' + m)});")
         L("if (st != OSDK_OK) return st;")
@@ -855,6 +863,109 @@ class Generator:
             c.close()
             c()
         return h.text(), c.text()
+
+    # ---- Python objects (the accelerator of osdk_conformance) ----------------------------------
+
+    def py_keys(self) -> list[str]:
+        """Every dict key the Python model can hold: field ids, then the keys of enums and floats."""
+        keys: list[str] = []
+        for t in self.types:
+            for f in t.fields:
+                if f.id not in self.skipped and f.id not in keys:
+                    keys.append(f.id)
+        for k in PY_MODEL_KEYS:
+            if k not in keys:
+                keys.append(k)
+        return keys
+
+    @staticmethod
+    def py_key(key: str) -> str:
+        return f"osdk_py_keys[OSDK_PY_K_{key.upper()}]"
+
+    def gen_py_value(self, t: TypeSpec, f: FieldSpec, lval: str) -> str:
+        """A C expression giving a new reference to the model of one value (NULL on failure)."""
+        if f.kind in ("int", "bits"):
+            if f.enum is not None:
+                return f"osdk_py_enum((int64_t){lval}, {f.enum.cname}_name((int64_t){lval}))"
+            if f.is_bool:
+                return f"osdk_py_bool({lval})"
+            if f.kind == "int" and f.signed:
+                return f"PyLong_FromLongLong((long long){lval})"
+            return f"PyLong_FromUnsignedLongLong((unsigned long long){lval})"
+        if f.kind == "float":
+            return f"osdk_py_f{32 if f.width == 4 else 64}({lval}.bits)"
+        if f.kind in ("bytes", "contents"):
+            return f"osdk_py_hex({lval}.ptr, {lval}.len)"
+        if f.kind == "struct":
+            return f"{f.ref.target.cname}_to_py(&{lval})"
+        raise GenError(f"{t.ksy_name}.{f.id}: no Python model for kind {f.kind}")
+
+    def gen_py(self) -> tuple[str, str]:
+        h, c = Lines(), Lines()
+        for t in self.types:
+            h(f"PyObject *{t.cname}_to_py(const {t.cname}_t *self);")
+        for t in self.types:
+            kept = [f for f in t.fields if f.id not in self.skipped]
+            c(f"/* {t.ksy_name} */")
+            c.func(f"PyObject *{t.cname}_to_py(const {t.cname}_t *self)")
+            c(f"PyObject *d = OSDK_PY_NEW_DICT({len(kept)});")
+            c("if (d == NULL) return NULL;")
+            for f in kept:
+                if f.cond is not None:
+                    c.open(f"if (self->{self.present(f.id)}) {{")
+                key = self.py_key(f.id)
+                if f.repeat is not None:
+                    c.open("{")
+                    c(f"PyObject *list = PyList_New((Py_ssize_t)self->{f.id}_count);")
+                    c(f"if (osdk_py_put(d, {key}, list) < 0) goto fail;")
+                    c.open(f"for (size_t i = 0; i < self->{f.id}_count; i++) {{")
+                    c(f"PyObject *item = {self.gen_py_value(t, f, f'self->{f.id}[i]')};")
+                    c("if (item == NULL) goto fail;")
+                    c("PyList_SET_ITEM(list, (Py_ssize_t)i, item);")
+                    c.close()
+                    c.close()
+                elif f.kind == "switch":
+                    c.open("{")
+                    c("PyObject *v;")
+                    c.open(f"switch (self->{f.id}.tag) {{")
+                    for m, target in self.switch_members(t, f):
+                        c(f"case {self.switch_tag(t, f, m)}: v = {target.cname}_to_py(&self->{f.id}.u.{m}); break;")
+                    if f.size is not None or f.size_eos:
+                        c(f"case {self.switch_tag(t, f, 'raw')}: "
+                          f"v = osdk_py_hex(self->{f.id}.u.raw.ptr, self->{f.id}.u.raw.len); break;")
+                    c("default: v = Py_NewRef(Py_None); break;")
+                    c.close()
+                    c(f"if (osdk_py_put(d, {key}, v) < 0) goto fail;")
+                    c.close()
+                else:
+                    c(f"if (osdk_py_put(d, {key}, {self.gen_py_value(t, f, f'self->{f.id}')}) < 0) goto fail;")
+                if f.cond is not None:
+                    c.close()
+            # see osdk_py_untracked: only a dict that holds no list leaves the collector
+            c("return osdk_py_untracked(d);" if all(f.repeat is None for f in kept) else "return d;")
+            c.close("fail:")
+            c.depth += 1
+            c("Py_DECREF(d);")
+            c("return NULL;")
+            c.close()
+            c()
+        return h.text(), c.text()
+
+    def render_python(self) -> dict[str, str]:
+        """The files of generated/cpython/: the value model as Python objects."""
+        keys = self.py_keys()
+        py_h, py_c = self.gen_py()
+        values = {
+            "banner": BANNER,
+            "key_enum": "\n".join(f"    OSDK_PY_K_{k.upper()} = {i}," for i, k in enumerate(keys)),
+            "key_count": str(len(keys)),
+            "key_names": self._wrap([c_string(k) for k in keys], per=6),
+            "py_h": py_h, "py_c": py_c,
+        }
+        files = {}
+        for tpl in sorted((TEMPLATES / "cpython").glob("*.in")):
+            files[tpl.name[:-3]] = string.Template(tpl.read_text(encoding="utf-8")).substitute(values)
+        return files
 
     # ---- frame header (receiver) --------------------------------------------------------------
 
@@ -1100,6 +1211,9 @@ class Generator:
 def main(argv: Optional[list[str]] = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", required=True, help="directory to write the C sources into")
+    ap.add_argument("--target", choices=("c", "cpython"), default="c",
+                    help="c: the C99 decoder (generated/c); cpython: its value model as Python objects, "
+                         "for the accelerator of osdk_conformance (generated/cpython)")
     args = ap.parse_args(argv)
     try:
         spec = Spec(ROOT / "spec")
@@ -1107,7 +1221,8 @@ def main(argv: Optional[list[str]] = None) -> int:
         tables = tables_tool.tables()
         rules_doc = yaml.safe_load((ROOT / "spec" / "rules.yaml").read_text(encoding="utf-8"))
         from osdk_conformance.core.model import SKIPPED_FIELDS
-        files = Generator(spec, tables, rules_doc, frozenset(SKIPPED_FIELDS)).render()
+        gen = Generator(spec, tables, rules_doc, frozenset(SKIPPED_FIELDS))
+        files = gen.render() if args.target == "c" else gen.render_python()
     except (SpecError, GenError, ExprError) as e:
         print(f"cgen: {e}", file=sys.stderr)
         return 1

@@ -23,6 +23,7 @@
 #include <time.h>
 
 #include "jsonread.h"
+#include "osdk_acks.h"
 #include "osdk_crc.h"
 #include "osdk_decoder.h"
 #include "osdk_deframer.h"
@@ -395,50 +396,11 @@ static void op_check_movement(const jv_t *req, int profile)
 /* ---- decode_stream ------------------------------------------------------------------------------------ */
 
 typedef struct {
-    uint8_t session;
-    uint16_t seq;
-    uint8_t cmd_set;
-    uint8_t cmd_id;
-} pending_t;
-
-typedef struct {
     int profile;
     bool first_event;
-    size_t count;
-    pending_t pending[PENDING_LIMIT + 1]; /* oldest first */
+    osdk_ack_table_t acks;
+    osdk_pending_t pending[PENDING_LIMIT + 1];
 } stream_ctx_t;
-
-static long pending_find(const stream_ctx_t *s, unsigned session, unsigned seq)
-{
-    size_t i;
-    for (i = 0; i < s->count; i++) {
-        if (s->pending[i].session == session && s->pending[i].seq == seq) return (long)i;
-    }
-    return -1;
-}
-
-static void pending_remove(stream_ctx_t *s, size_t i)
-{
-    memmove(&s->pending[i], &s->pending[i + 1], (s->count - i - 1) * sizeof s->pending[0]);
-    s->count--;
-}
-
-/* A command with an existing key keeps its place (as a Python dict does). */
-static void pending_put(stream_ctx_t *s, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id)
-{
-    long at = pending_find(s, session, seq);
-    if (at >= 0) {
-        s->pending[at].cmd_set = cmd_set;
-        s->pending[at].cmd_id = cmd_id;
-        return;
-    }
-    s->pending[s->count].session = session;
-    s->pending[s->count].seq = seq;
-    s->pending[s->count].cmd_set = cmd_set;
-    s->pending[s->count].cmd_id = cmd_id;
-    s->count++;
-    if (s->count > PENDING_LIMIT) pending_remove(s, 0);
-}
 
 static void write_event(stream_ctx_t *s, osdk_json_t *w)
 {
@@ -502,19 +464,17 @@ static void decode_stream_frame(stream_ctx_t *s, const osdk_event_t *ev, frame_r
     if (g_frame.data_present && g_frame.data.tag == OSDK_FRAME_DATA_FRAME_DATA) {
         const osdk_frame_frame_data_t *fd = &g_frame.data.u.frame_data;
         if (g_frame.is_ack) {
-            long at = pending_find(s, g_frame.session, g_frame.seq);
-            if (at >= 0) {
-                pending_t p = s->pending[at];
-                pending_remove(s, (size_t)at);
-                r->ack_of = osdk_command_name(p.cmd_set, p.cmd_id);
-                if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, p.cmd_set, p.cmd_id, true,
+            uint8_t cmd_set, cmd_id;
+            if (osdk_ack_table_take(&s->acks, g_frame.session, g_frame.seq, &cmd_set, &cmd_id)) {
+                r->ack_of = osdk_command_name(cmd_set, cmd_id);
+                if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, cmd_set, cmd_id, true,
                                         osdk_profile_enum_values[s->profile], &g_payload, &r->err) != OSDK_OK)
                     return;
                 r->have_ack = true;
             }
         } else {
             r->command = osdk_command_name(fd->cmd_set, fd->cmd_id);
-            if (g_frame.session > 0) pending_put(s, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
+            if (g_frame.session > 0) osdk_ack_table_put(&s->acks, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
         }
     }
     r->ok = true;
@@ -614,6 +574,7 @@ static void op_decode_stream(const jv_t *req, int profile)
     memset(&g_stream, 0, sizeof g_stream);
     g_stream.profile = profile;
     g_stream.first_event = true;
+    osdk_ack_table_init(&g_stream.acks, g_stream.pending, PENDING_LIMIT);
     osdk_deframer_init(&d, g_window, sizeof g_window);
     fputs("{\"ok\": true, \"result\": {\"events\": [", stdout);
     /* reads of the given sizes; what they leave over arrives as one last read */
@@ -710,6 +671,7 @@ static int bench_main(int argc, char **argv)
     if (!in) return bench_fail("cannot read %s: %s", path, strerror(errno));
     memset(&g_stream, 0, sizeof g_stream);
     g_stream.profile = profile;
+    osdk_ack_table_init(&g_stream.acks, g_stream.pending, PENDING_LIMIT);
     memset(&b, 0, sizeof b);
     b.stream = &g_stream;
     osdk_deframer_init(&d, g_window, sizeof g_window);
