@@ -17,7 +17,7 @@ LANGS  := javascript java go c
 
 setup: system-packages $(PY_OK) $(ACCEL_OK) $(JS_OK) testees
 
-# clang + sanitizer/libFuzzer runtimes from Debian, pinned (tools/apt-packages.sh).
+# clang + sanitizer/libFuzzer runtimes, and tshark, from Debian, pinned (tools/apt-packages.sh).
 system-packages:
 	@sh tools/apt-packages.sh
 

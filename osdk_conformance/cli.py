@@ -36,6 +36,7 @@ GROUPS = {
     "spec": "inspect and check the specification",
     "vectors": "check the golden vectors and their coverage of the spec",
     "sdk": "DJI's Onboard-SDK itself against the kit (needs a checkout of it)",
+    "wireshark": "the Wireshark dissector generated from the spec",
 }
 
 COMMANDS = (
@@ -66,6 +67,8 @@ COMMANDS = (
                                   "against osdkc sim for each profile", "sdk.host", "run_host_test"),
     Command(("bench",), "benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak",
             "bench.command", "run_bench"),
+    Command(("wireshark", "install"), "copy the Wireshark dissector into your personal Lua plugin folder",
+            "device.wireshark", "run_install"),
 )
 
 

@@ -124,6 +124,8 @@ def test_the_new_profile_gets_its_generated_layout(extended: tuple[Path, dict[st
     assert any(f["id"] == ITEM and f["type"] == "osdk_broadcast_items::wind" for f in ksy["seq"])
     assert (repo / "generated/python/osdk_kaitai/osdk_broadcast_x9_fw9_9.py").exists()
     assert "x9_fw9_9" in (repo / "generated/c/osdk_decoder.h").read_text()
+    dissector = (repo / "generated/wireshark/osdk.lua").read_text()
+    assert '"x9-fw9.9"' in dissector and f'"osdk.broadcast.{ITEM}' in dissector
     payload = (repo / "spec/osdk_payload.ksy").read_text()
     assert "profile != profile::m100_fw2_3 and profile != profile::x9_fw9_9" in payload
 

@@ -87,8 +87,12 @@ def test_clusterfuzzlite_build_script_builds_c_targets_that_run(tmp_path, smoke_
             z.extractall(corpus, members=names[:200])
         run = subprocess.run([str(binary), "-runs=1", str(corpus)], capture_output=True, text=True, timeout=300)
         assert run.returncode == 0, run.stderr[-3000:]
-        # every seed once, then one mutated input
-        assert "INITED" in run.stderr and f"Done {len(names[:200]) + 1} runs" in run.stderr, run.stderr[-2000:]
+        # every seed once, plus libFuzzer's own one or two runs (the empty input
+        # it tries, the mutation asked for): the total has been 201 and, once
+        # in a full suite under load, 202 for 200 seeds
+        done = re.search(r"Done (\d+) runs", run.stderr)
+        assert "INITED" in run.stderr and done, run.stderr[-2000:]
+        assert len(names[:200]) + 1 <= int(done.group(1)) <= len(names[:200]) + 2, run.stderr[-2000:]
 
 
 @pytest.mark.slow

@@ -128,6 +128,13 @@ def test_a_testee_in_another_language_needs_the_checkout(installed) -> None:
     assert proc.returncode == 2 and "needs a checkout" in proc.stderr and "Traceback" not in proc.stderr
 
 
+def test_the_wireshark_dissector_installs_from_the_package(installed) -> None:
+    target = installed[2] / "plugins"
+    out = ok(osdkc(installed, "wireshark", "install", "--dir", str(target)))
+    assert (target / "osdk.lua").read_bytes() == (ROOT / "generated" / "wireshark" / "osdk.lua").read_bytes()
+    assert str(target) in out
+
+
 def test_selftest_one_mutant(installed) -> None:
     out = ok(osdkc(installed, "selftest", "--mutant", "crc16_init_ffff", "--no-baseline"))
     assert "killed" in out

@@ -1,11 +1,20 @@
 #!/bin/sh
 # System packages the test suite needs beyond the language toolchains the
 # machine has: clang with its sanitizer and libFuzzer runtimes, for the C
-# decoder's sanitizer tests and fuzz smoke runs. Pinned to Debian 12's
-# versions; skipped when they are already installed.
+# decoder's sanitizer tests and fuzz smoke runs, and tshark, which dissects
+# captures with the generated Wireshark dissector (tests/test_wireshark.py).
+# Pinned to Debian 12's versions; each is skipped when it is already there.
 set -eu
-PACKAGES="clang-14=1:14.0.6-12 libclang-rt-14-dev=1:14.0.6-12"
-if command -v clang-14 >/dev/null 2>&1 && [ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ]; then
+CLANG="clang-14=1:14.0.6-12 libclang-rt-14-dev=1:14.0.6-12"
+TSHARK="tshark=4.0.17-0+deb12u3"
+PACKAGES=""
+if ! command -v clang-14 >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ]; then
+    PACKAGES="$CLANG"
+fi
+if ! command -v tshark >/dev/null 2>&1; then
+    PACKAGES="$PACKAGES $TSHARK"
+fi
+if [ -z "${PACKAGES# }" ]; then
     exit 0
 fi
 SUDO=""
@@ -15,4 +24,11 @@ if [ "$(id -u)" != 0 ]; then
     fi
 fi
 $SUDO apt-get update -qq
+case "$PACKAGES" in
+    *tshark*)
+        # wireshark-common's postinst asks whether non-root users may capture;
+        # the tests only read files, so answer no before apt can ask.
+        echo "wireshark-common wireshark-common/install-setuid boolean false" | $SUDO debconf-set-selections
+        ;;
+esac
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $PACKAGES >/dev/null

@@ -17,6 +17,7 @@ Targets and where they go, relative to generated/:
   c           c/                       tools/cgen: C99 decoder, no heap
   cpython     cpython/                 tools/cgen: its value model as Python objects (the accelerator)
   tables      tables/osdk_tables.json  rules and value-model tables
+  wireshark   wireshark/osdk.lua       tools/wiresharkgen: Wireshark Lua dissector
 
 --check regenerates into a scratch directory and fails (exit 1) when the
 result differs from what is checked in, so CI catches hand edits and specs
@@ -125,6 +126,10 @@ def gen_tables(out: Path) -> None:
     _load_tool("osdk_tables_tool", TOOLS / "tables.py").write(out)
 
 
+def gen_wireshark(out: Path) -> None:
+    _load_tool("osdk_wiresharkgen", TOOLS / "wiresharkgen" / "generate.py").write(out)
+
+
 # target -> (directory under generated/, generator writing into a fresh directory)
 TARGETS: dict[str, tuple[Path, Callable[[Path], None]]] = {
     "python": (Path("python") / "osdk_kaitai", gen_python),
@@ -134,6 +139,7 @@ TARGETS: dict[str, tuple[Path, Callable[[Path], None]]] = {
     "c": (Path("c"), gen_c),
     "cpython": (Path("cpython"), gen_cpython),
     "tables": (Path("tables"), gen_tables),
+    "wireshark": (Path("wireshark"), gen_wireshark),
 }
 
 
