@@ -225,16 +225,10 @@ def _event(state: dict[str, Any], model: dict[str, Any]) -> Event:
 
 
 def _events(models: Iterable[dict[str, Any]]) -> Iterator[Event]:
-    # Every key of a decoder's event is a field of Event (tests/test_accel.py).
-    # _event, inlined: this loop runs once per frame of a capture.
-    new, set_state = _new_event, _set_state
+    # every key of a decoder's event is a field of Event (tests/test_accel.py)
     try:
         for ev in models:
-            state = ev.copy()
-            state["model"] = ev
-            event = new(Event)
-            set_state(event, "__dict__", state)
-            yield event
+            yield _event(ev.copy(), ev)
     except UsageError as e:  # a damaged capture, or --direction tx/both on raw bytes
         raise InputError(str(e)) from None
 

@@ -13,7 +13,6 @@ import random
 import shutil
 import subprocess
 import time
-from collections import defaultdict
 from pathlib import Path
 from typing import Any
 
@@ -100,12 +99,7 @@ def tshark(capture: Path, profile: str, tmp_home: Path) -> list[list[Fields]]:
 
 def write_capture(path: Path, records: list[bytes]) -> Path:
     """A capture of `records`, each one rx packet, 1 ms apart."""
-    writer = CaptureWriter(path, {"profile": "test"})
-    t0 = 1_700_000_000 * 10**9
-    for i, data in enumerate(records):
-        writer.rx(data, t0 + i * 1_000_000)
-    writer.close()
-    return path
+    return write_records(path, [("rx", data) for data in records])
 
 
 # ---------------------------------------------------------------- the value model as fields
@@ -276,38 +270,16 @@ def test_every_invalid_vector_shows_its_error(profile: str, tmp_path: Path) -> N
 
 # ---------------------------------------------------------------- a simulator run
 
-def _simulator_capture(path: Path, profile: str, seconds: float) -> list[bytes]:
-    """`seconds` of the simulator's bytes, read in pieces of random sizes
-    (so frames are split across packets), written as rx records."""
-    rng = random.Random(15)
-    records: list[bytes] = []
-    with api.simulator(profile, seed=15) as sim:
-        port = serial.Serial(sim.url, timeout=0.02)
-        try:
-            end = time.monotonic() + seconds
-            while time.monotonic() < end:
-                data = port.read(rng.randint(1, 97))
-                if data:
-                    records.append(data)
-        finally:
-            port.close()
-    write_capture(path, records)
-    return records
-
-
 @pytest.mark.parametrize("profile", PROFILES)
 def test_simulator_capture_matches_osdkc_decode(profile: str, tmp_path: Path) -> None:
+    # the simulator's bytes alone, read in pieces of random sizes, so frames are split across packets
     capture = tmp_path / "sim.pcapng"
-    records = _simulator_capture(capture, profile, 1.0)
-    events = [e for e in api.decode_file(capture, profile) if e.kind == "frame" and e.command == "broadcast"]
+    records = _simulator_session(capture, profile, 1.0, commands=[], seed=15)
+    events = [e for e in api.decode_file(capture, profile, direction="both")
+              if e.kind == "frame" and e.command == "broadcast"]
     assert len(events) >= 10, f"the simulator sent {len(events)} broadcasts in 1 s"
-    # the packet holding each frame's last byte: where the dissector shows it
-    ends, total = [], 0
-    for record in records:
-        total += len(record)
-        ends.append(total)
-    last_packet = [next(i for i, end in enumerate(ends) if end >= e.offset + e.frame["len"]) for e in events]
-    first_packet = [next(i for i, end in enumerate(ends) if end > e.offset) for e in events]
+    last_packet = event_packets(events, records)  # where the dissector shows each frame
+    first_packet = [packet_of(records, e.direction, e.offset) for e in events]
     assert any(a != b for a, b in zip(first_packet, last_packet)), "no frame was split across packets"
 
     packets = tshark(capture, profile, tmp_path)
@@ -375,19 +347,22 @@ def write_records(path: Path, records: list[Record]) -> Path:
     return path
 
 
+def packet_of(records: list[Record], direction: str, offset: int) -> int:
+    """The packet holding byte `offset` of one direction's stream."""
+    total = 0
+    for i, (d, data) in enumerate(records):
+        if d == direction:
+            total += len(data)
+            if total > offset:
+                return i
+    raise AssertionError(f"no {direction} byte {offset} in the capture")
+
+
 def event_packets(events: list, records: list[Record]) -> list[int]:
     """The packet holding each event's last byte (where the dissector shows
     it): offsets count the bytes of the event's own direction."""
-    ends: dict[str, list[tuple[int, int]]] = defaultdict(list)
-    totals: dict[str, int] = defaultdict(int)
-    for i, (direction, data) in enumerate(records):
-        totals[direction] += len(data)
-        ends[direction].append((totals[direction], i))
-    out = []
-    for e in events:
-        last = e.offset + (e.frame["len"] if e.kind == "frame" else e.length)
-        out.append(next(i for end, i in ends[e.direction] if end >= last))
-    return out
+    return [packet_of(records, e.direction, e.offset + (e.frame["len"] if e.kind == "frame" else e.length) - 1)
+            for e in events]
 
 
 def event_mismatches(event, tree: Fields) -> list[str]:
@@ -470,13 +445,14 @@ def _session_commands(profile: str) -> list[tuple[bytes, str]]:
     return out
 
 
-def _simulator_session(path: Path, profile: str, seconds: float) -> list[Record]:
+def _simulator_session(path: Path, profile: str, seconds: float, commands: list[bytes],
+                       seed: int = 1515) -> list[Record]:
     """Both directions of a session with the simulator: the commands written
-    (some in two writes) as tx records, everything read, in pieces of
-    random sizes, as rx records, in the order they happened."""
-    rng = random.Random(1515)
+    (every other one in two writes) as tx records, everything read, in
+    pieces of random sizes, as rx records, in the order they happened."""
+    rng = random.Random(seed)
     records: list[Record] = []
-    commands = [frame for frame, _ in _session_commands(profile)]
+    commands = list(commands)
     with api.simulator(profile, seed=15) as sim:
         port = serial.Serial(sim.url, timeout=0.02)
         try:
@@ -502,7 +478,7 @@ def _simulator_session(path: Path, profile: str, seconds: float) -> list[Record]
 @pytest.mark.parametrize("profile", PROFILES)
 def test_simulator_session_acks_match_osdkc_decode_both(profile: str, tmp_path: Path) -> None:
     capture = tmp_path / "session.pcapng"
-    records = _simulator_session(capture, profile, 1.0)
+    records = _simulator_session(capture, profile, 1.0, [frame for frame, _ in _session_commands(profile)])
     assert sum(1 for d, _ in records if d == "tx") == 6, "two of the four commands are written in two pieces"
     events, _ = assert_dissected_as_decoded(capture, records, profile, tmp_path)
     sent = {e.command for e in events if e.direction == "tx" and e.kind == "frame"}

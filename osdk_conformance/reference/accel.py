@@ -122,9 +122,6 @@ def stream(profile: str) -> NativeStream | None:
 
 
 def events(chunks: Iterable[bytes], decoder: NativeStream) -> Iterator[dict[str, Any]]:
-    feed = decoder._decoder.feed  # NativeStream.feed, inlined: one generator less per event
     for chunk in chunks:
-        view = memoryview(chunk)
-        for start in range(0, len(view), SLICE):
-            yield from feed(view[start:start + SLICE])
+        yield from decoder.feed(chunk)
     yield from decoder.finish()
