@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import os
 import threading
+import time
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -686,6 +687,25 @@ class RunningSimulator:
     def authority(self) -> dict[str, Any]:
         """Who has control (`rc` or `onboard`), whether it was activated, and the broadcast rates now."""
         return self._sim.authority_state()
+
+    def restart(self, timeout: float = 2.0) -> None:
+        """Restart it, as `osdkc sim` on SIGHUP: a power cycle that brings a
+        hung simulator back. It loses what a reboot loses (SEQ, time stamp,
+        activation, control authority, rates, pending commands, bytes not yet
+        sent) and what planted bugs did (a hang, a wedged command handler;
+        their record in the stats stays), and is deaf and silent for 0.3 s
+        before it broadcasts again. Returns once it has restarted, which
+        `stats()["restarts"]` counts; raises RuntimeError if it has not within
+        `timeout` seconds (a stopped simulator does not), InputError for a
+        timeout that is not a number of seconds > 0."""
+        if isinstance(timeout, bool) or not isinstance(timeout, (int, float)) or not positive_float.accepts(timeout):
+            raise InputError(f"timeout must be a finite number of seconds > 0, got {timeout!r}")
+        wanted = self._sim.request_restart()
+        end = time.monotonic() + timeout
+        while self._sim.restart_requests_done < wanted:
+            if time.monotonic() >= end:
+                raise RuntimeError(f"the simulator did not restart within {timeout:g} s")
+            time.sleep(0.005)
 
     def __repr__(self) -> str:
         return f"RunningSimulator(url={self.url!r}, profile={self.profile!r})"

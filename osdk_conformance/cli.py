@@ -55,8 +55,8 @@ COMMANDS = (
             "harness.vectors", "run_vectors", "add_coverage_arguments"),
     Command(("selftest",), "mutation check: every deliberately broken implementation must fail the vectors",
             "harness.selftest", "run_selftest"),
-    Command(("fuzz",), "differential fuzzing of two or more implementations (hypothesis)",
-            "harness.fuzz", "run_fuzz"),
+    Command(("fuzz",), "differential fuzzing of two or more implementations (hypothesis), or of a "
+                       "flight controller on a serial port (--port)", "device.fuzz_command", "run_fuzz"),
     Command(("sim",), "simulated flight controller on a pseudo-terminal or TCP port",
             "sim.simulator", "run_sim"),
     Command(("device",), "acceptance suite against a flight controller on a serial port (or a capture)",
@@ -65,7 +65,7 @@ COMMANDS = (
             "device.soak", "run_soak"),
     Command(("sdk", "host-test"), "build DJI's host stack with our driver, run a whole session "
                                   "against osdkc sim for each profile", "sdk.host", "run_host_test"),
-    Command(("bench",), "benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak",
+    Command(("bench",), "benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak, device fuzzing",
             "bench.command", "run_bench"),
     Command(("wireshark", "install"), "copy the Wireshark dissector into your personal Lua plugin folder",
             "device.wireshark", "run_install"),

@@ -8,7 +8,9 @@ the conformance runner (reports in reports/; the status section of
 generated/README.md is rendered from that run), and proves the suite bites
 with the mutation check. Last, it runs the serial acceptance suite against
 the simulated flight controller over a pseudo-terminal (report in
-reports/device.html, capture in reports/device.pcapng).
+reports/device.html, capture in reports/device.pcapng), and fuzzes it over
+one (`osdkc fuzz --port`: a healthy simulator survives every case kind; report
+in reports/fuzz.html, capture in reports/fuzz.pcapng).
 """
 from __future__ import annotations
 
@@ -25,6 +27,7 @@ from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.paths import CHECKOUT, REPORTS
 from osdk_conformance.core.rules import profile_names
 from osdk_conformance.device.acceptance import add_arguments as device_arguments, run_device
+from osdk_conformance.device.fuzz_command import add_arguments as fuzz_arguments, run_fuzz
 from osdk_conformance.harness import status_readme
 from osdk_conformance.harness.runner import ALL, add_arguments as run_arguments, run_command
 from osdk_conformance.harness.selftest import add_arguments as selftest_arguments, run_selftest
@@ -103,6 +106,23 @@ def _acceptance_on_simulator() -> int:
         return 1
 
 
+FUZZ_CASES = 600   # two rounds of every case kind and more: about 3 s at 921600 baud
+
+
+def _fuzz_on_simulator() -> int:
+    """`osdkc fuzz --port` against a healthy `osdkc sim`: it must survive every case."""
+    print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc fuzz --port", flush=True)
+    try:
+        with spawned("--profile", "a3-fw3.1") as (url, _):
+            return _command("fuzz", fuzz_arguments, run_fuzz, "--port", url, "--profile", "a3-fw3.1", "--baud",
+                            "921600", "--cases", str(FUZZ_CASES), "--seed", "1", "--quiet",
+                            "--capture", str(REPORTS / "fuzz.pcapng"), "--findings-dir", str(REPORTS / "fuzz-findings"),
+                            "--html", str(REPORTS / "fuzz.html"), "--junit", str(REPORTS / "fuzz.xml"))
+    except UsageError as e:
+        print(f"  {e}")
+        return 1
+
+
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
     add_seed_argument(p)
 
@@ -129,9 +149,10 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         failed += not ok
     if CHECKOUT:  # the status section of the checkout's generated/README.md; an installed package is not written to
         status_readme.update(REPORTS / "conformance.json")
-    ok = _acceptance_on_simulator() == 0
-    passed += ok
-    failed += not ok
+    for on_simulator in (_acceptance_on_simulator, _fuzz_on_simulator):
+        ok = on_simulator() == 0
+        passed += ok
+        failed += not ok
     print(f"reports: {REPORTS}/")
     print(f"kit: {passed} passed, {failed} failed")
     return 1 if failed else 0

@@ -143,6 +143,7 @@ def test_a_count_mismatch_names_the_implementation():
     (("--impl", "cobol"), "unknown implementation 'cobol'"),
     (("--corpora", "a-day"), "unknown corpus 'a-day'"),
     (("--repeats", "0"), "argument --repeats: an integer >= 1 was expected, got '0'"),
+    (("--device-fuzz-cases", "0"), "argument --device-fuzz-cases: an integer >= 1 was expected, got '0'"),
     (("--input", "/nonexistent/capture.bin", "--profile", "a3-fw3.1"), "cannot read /nonexistent/capture.bin"),
     (("--input", "x.bin"), "--input and --profile go together"),
     (("--markdown", "/nonexistent/dir/out.md"), "--markdown /nonexistent/dir/out.md: directory"),
@@ -168,3 +169,43 @@ def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     assert verdicts(none) == ["not measured", "met"]
     assert verdicts(short) == ["MISSED", "met"]
     assert verdicts(full) == ["met", "met"]
+
+
+def test_device_fuzz_section_reports_each_baud_rate(tmp_path):
+    """The device fuzzer against a healthy simulator over a pty, a few cases at
+    each baud rate: every number is there and positive, nothing was found."""
+    from osdk_conformance.bench.sections import DEVICE_FUZZ_BAUDS
+
+    cases = 20
+    proc = osdkc("bench", "--only", "device_fuzz", "--device-fuzz-cases", str(cases), "--json",
+                 "--markdown", str(tmp_path / "bench.md"), timeout=120)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    result = json.loads(proc.stdout)
+    assert result["command"] == f"osdkc bench --only device_fuzz --device-fuzz-cases {cases}"
+    assert set(result) >= {"device_fuzz", "targets", "ok"} and "decode" not in result and result["ok"]
+    dfz = result["device_fuzz"]
+    assert dfz["ok"] and [r["baud"] for r in dfz["rows"]] == list(DEVICE_FUZZ_BAUDS)
+    for r in dfz["rows"]:
+        assert r["ok"] and r["verdict"] == "NO FINDING" and r["findings"] == 0, r
+        assert r["cases"] == cases and f"--baud {r['baud']} --cases {cases} --seed 1" in r["command"]
+        for key in ("seconds", "cases_per_s", "bytes_per_case", "line_cases_per_s", "share_of_line"):
+            assert r[key] > 0, (key, r)
+        assert r["line_cases_per_s"] == pytest.approx(r["baud"] / 10 / r["bytes_per_case"], rel=0.01)
+    (target,) = [t for t in result["targets"] if "osdkc fuzz --port" in t["target"]]
+    assert target["met"] is None and target["verdict"] == "reported, no target"
+    md = (tmp_path / "bench.md").read_text()
+    for baud in DEVICE_FUZZ_BAUDS:
+        assert f"| device fuzzing, a3-fw3.1 simulator over a pty at {baud} baud |" in md
+    assert "| reported, no target |" in md
+
+
+def test_a_device_fuzz_failure_is_missed_not_reported():
+    from osdk_conformance.bench.report import _device_fuzz_targets, _target_verdict
+
+    good = {"baud": 921600, "ok": True, "cases_per_s": 900.0, "share_of_line": 0.8}
+    bad = {"baud": 230400, "ok": False, "cases_per_s": 10.0, "error": "1 FINDING(S) on a healthy simulator"}
+    (t,) = _device_fuzz_targets({"ok": False, "rows": [good, bad]})
+    assert _target_verdict(t) == "MISSED"
+    assert t["measured"].endswith("FAILED: 230400 baud: 1 FINDING(S) on a healthy simulator")
+    (t,) = _device_fuzz_targets({"ok": True, "rows": [good]})
+    assert _target_verdict(t) == "reported, no target" and t["measured"] == "900 cases/s at 921600 baud (80% of what the line carries)"

@@ -5,6 +5,7 @@ broadcasting, and the trigger is in the stats."""
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import signal
 import subprocess
@@ -15,12 +16,13 @@ from pathlib import Path
 import pytest
 import serial
 
+from osdk_conformance import api
 from osdk_conformance.core.crc import crc16
 from osdk_conformance.core.deframe import Deframer, Frame, frame_length
 from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.bugs import BUGS, REBOOT_PAUSE_S
-from osdk_conformance.sim.simulator import SimConfig, Simulator, add_arguments
+from osdk_conformance.sim.simulator import PtyTransport, SimConfig, Simulator, add_arguments, spawned
 from osdk_construct.payload import osdk_payload
 
 PROFILE = "a3-fw3.1"
@@ -342,3 +344,152 @@ def test_unknown_cmd_silence_over_a_pty(start, planted):
         assert stats["acks_sent"] == 1
     else:
         assert ack is not None and "bug_events" not in stats and stats["acks_sent"] == 2
+
+
+# ---- a restart (a power cycle: SIGHUP, RunningSimulator.restart) -------------
+
+
+class Stepper(Wire):
+    """A port that lets the simulator's run loop go round once: the loop
+    stops when it next looks for its ports to wait on."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.sim: Simulator | None = None
+
+    def read_fds(self) -> list[int]:
+        self.sim.running = False
+        return []
+
+
+def stepped(bugs: tuple[str, ...], *reads: bytes) -> Simulator:
+    """A simulator that has received `reads`, whose run loop can be stepped."""
+    sim = Simulator(SimConfig(profile=PROFILE, bugs=bugs), Stepper())
+    sim.t.sim = sim
+    for data in reads:
+        heard(sim, data, time.monotonic())
+    return sim
+
+
+def heard(sim: Simulator, data: bytes, now: float) -> None:
+    """Bytes arriving at `now`, deaf while halted as in the run loop."""
+    sim.on_received(data, now, sim._halted(now))
+
+
+def restarted(sim: Simulator) -> float:
+    """Request a restart and let the run loop perform it; when it resumes."""
+    sim.request_restart()
+    sim.running = True
+    sim.run()
+    assert sim.restart_requests_done == sim.restart_requests
+    return sim.resume_at
+
+
+def test_a_restart_brings_a_simulator_hung_by_a_long_frame_back():
+    sim = stepped(("long-frame-hang",), version_query(1), LONG[:12])
+    heard(sim, version_query(2), time.monotonic())
+    assert sim._halted(time.monotonic()) and [op.seq for op in acks(sim)] == [1]
+    resume = restarted(sim)
+    assert not sim.bugs.hung and sim.bugs.pending.tail == bytearray() and sim.bugs.received == 0
+    heard(sim, version_query(3), resume - 0.01)             # deaf while it boots
+    heard(sim, LONG[12:] + version_query(4), resume + 0.01)  # the rest of the long frame is garbage now
+    assert [op.seq for op in acks(sim)] == [1, 4]
+    assert sim.stats["restarts"] == 1 and sim.stats["bug_triggers"] == {"long-frame-hang": 1}
+    assert len(sim.stats["bug_events"]) == 1
+
+
+def test_a_restart_unwedges_the_command_handler():
+    sim = stepped(("unknown-cmd-silence",), UNKNOWN_SET, version_query(3))
+    assert sim.bugs.silent and acks(sim) == []
+    resume = restarted(sim)
+    assert not sim.bugs.silent
+    heard(sim, version_query(4), resume + 0.01)
+    assert [op.seq for op in acks(sim)] == [4]
+    assert sim.stats["bug_triggers"] == {"unknown-cmd-silence": 1} and sim.stats["restarts"] == 1
+
+
+@pytest.mark.parametrize("bugs", [(), tuple(BUGS)], ids=["healthy", "all-bugs"])
+def test_a_restart_loses_what_a_reboot_loses_and_is_no_bug_trigger(bugs):
+    sim = stepped(bugs, activation(1), command(1, 0, {"request": 1}, 2), command(1, 0, {"request": 1}, 3),
+                  command(0, 0x10, {"codes": [1] * 16}, 4))
+    assert sim.activated and sim.control == "onboard" and set(sim.rates.values()) == {1}
+    assert sim.stats["restarts"] == 0 and sim.last_ack
+    sim.seq, sim.frame_index, sim.pending = 1234, 7, "release"
+    sim.vehicle.command = {"h": 1}
+    sim.outbuf += b"not yet sent"
+    before = time.monotonic()
+    resume = restarted(sim)
+    assert sim.seq == 0 and sim.frame_index == 0 and not sim.activated and sim.control == "rc"
+    assert sim.pending is None and not sim.onboard_requested and sim.vehicle.command is None
+    assert sim.rates == load_profile(PROFILE).default_rates_hz and sim.last_ack == {} and sim.outbuf == b""
+    assert before + REBOOT_PAUSE_S <= resume == sim.boot <= time.monotonic() + REBOOT_PAUSE_S
+    assert sim._halted(resume - 0.01) and not sim._halted(resume)
+    stalled = sim.stats["rx_bytes_discarded"]["stalled"]
+    heard(sim, version_query(5), resume - 0.01)
+    assert sim.stats["rx_bytes_discarded"]["stalled"] == stalled + len(version_query(5))
+    assert sim.stats["restarts"] == 1
+    if bugs:
+        assert sim.stats["bug_triggers"] == {name: 0 for name in BUGS} and sim.stats["bug_events"] == []
+    else:
+        assert not {"bugs", "bug_triggers", "bug_events"} & set(sim.stats)
+    # requests made before the loop gets to them are one restart
+    assert sim.request_restart() + 1 == sim.request_restart()
+    restarted(sim)
+    assert sim.stats["restarts"] == 2
+
+
+@pytest.mark.realtime
+def test_sighup_restarts_a_hung_simulator_over_a_pty(tmp_path):
+    stats_file = tmp_path / "stats.json"
+    with spawned("--pty", "--profile", PROFILE, "--bug", "long-frame-hang", "--stats", str(stats_file)) as (url, proc):
+        link = Link(url)
+        assert link.ask(version_query(1)) is not None
+        link.ser.write(LONG)
+        assert link.ask(version_query(3), 0.3) is None
+        hup = time.monotonic()
+        proc.send_signal(signal.SIGHUP)
+        # deaf while it boots: a query is worth sending once the broadcast is back
+        assert link.pump(1.0, lambda op: not op.is_ack) is not None
+        assert ack_code(0, 0, link.ask(version_query(4))) == "not_activated"
+        proc.send_signal(signal.SIGTERM)
+        end = time.monotonic() + 10
+        with contextlib.suppress(serial.SerialException):   # the port goes away when it stops
+            while proc.poll() is None and time.monotonic() < end:
+                link.pump(0.05)   # read on, so that it drains at once
+        link.ser.close()
+    stats = json.loads(stats_file.read_text())
+    assert stats["restarts"] == 1 and stats["bug_triggers"] == {"long-frame-hang": 1}
+    assert stats["acks_sent"] == 2
+    after = link.broadcasts(hup)
+    assert after and after[0][1] == 0 and after[0][0] >= hup + REBOOT_PAUSE_S - 0.05
+
+
+def test_running_simulator_restart_brings_a_hung_one_back():
+    with api.simulator(PROFILE, bugs=["long-frame-hang"]) as sim:
+        link = Link(sim.url)
+        try:
+            assert link.ask(version_query(1)) is not None
+            link.ser.write(LONG[:12])
+            assert link.ask(version_query(3), 0.3) is None
+            sim.restart()
+            assert sim.stats()["restarts"] == 1
+            assert link.pump(1.0, lambda op: not op.is_ack) is not None   # booted
+            assert link.ask(version_query(4)) is not None
+            assert sim.stats()["bug_triggers"] == {"long-frame-hang": 1}
+        finally:
+            link.ser.close()
+
+
+def test_running_simulator_restart_of_a_stopped_one_fails_in_time():
+    port = PtyTransport()
+    try:
+        stopped = api.RunningSimulator(Simulator(SimConfig(profile=PROFILE), port), port, PROFILE)
+        start = time.monotonic()
+        with pytest.raises(RuntimeError, match="did not restart within 0.1 s"):
+            stopped.restart(timeout=0.1)
+        assert time.monotonic() - start < 0.5
+        for bad in (0, -1.0, True, "1", float("nan")):
+            with pytest.raises(api.InputError, match="timeout must be"):
+                stopped.restart(timeout=bad)
+    finally:
+        port.close()

@@ -12,6 +12,9 @@ Sections (`--only`, default all, in this order):
 - run: wall and CPU time of `osdkc run --impl all`.
 - fuzz: executions per second of `osdkc fuzz --impl all` (fixed examples and seed).
 - acceptance: CPU use of the acceptance receiver at 100 Hz (`osdkc soak --json`).
+- device_fuzz: cases per second of `osdkc fuzz --port` against a healthy
+  `osdkc sim` over a pty at 921600 and 230400 baud (fixed cases and seed),
+  beside what the line could carry of the bytes a case takes.
 - reliability (only when named in --only: it takes about an hour):
   healthy active runs of `osdkc device` that must all pass, and seeded runs
   of every simulator fault that must all be detected (reliability.py).
@@ -40,12 +43,13 @@ from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int, probability
 
-SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "reliability")
-DEFAULT_SECTIONS = SECTIONS[:5]
+SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "reliability")
+DEFAULT_SECTIONS = SECTIONS[:6]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
     "fuzz_examples": (2000, 200),
     "soak_seconds": (60.0, 30.0),
+    "device_fuzz_cases": (2000, 200),
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
@@ -57,7 +61,8 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability)")
     ap.add_argument("--quick", action="store_true",
                     help=f"a fast check: corpora of {QUICK_CORPUS_SECONDS:g} s, "
-                         f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak")
+                         f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak, "
+                         f"{DEFAULTS['device_fuzz_cases'][1]} device fuzzing cases per baud rate")
     ap.add_argument("--corpora", metavar="NAMES",
                     help=f"comma-separated corpora (default all: {', '.join(CORPORA)})")
     ap.add_argument("--corpus-seconds", type=positive_float, metavar="S", help="make every corpus S seconds of traffic long")
@@ -77,6 +82,9 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="examples of the fuzz section (default %d, quick %d)" % DEFAULTS["fuzz_examples"])
     ap.add_argument("--soak-seconds", type=positive_float, metavar="S",
                     help="seconds of the acceptance section (default %g, quick %g)" % DEFAULTS["soak_seconds"])
+    ap.add_argument("--device-fuzz-cases", type=positive_int, metavar="N",
+                    help="cases of the device_fuzz section at each baud rate (default %d, quick %d)"
+                         % DEFAULTS["device_fuzz_cases"])
     ap.add_argument("--runs", type=non_negative_int, default=RELIABILITY_RUNS, metavar="N",
                     help=f"reliability: healthy active runs (default {RELIABILITY_RUNS})")
     ap.add_argument("--fault-runs", type=non_negative_int, default=FAULT_RUNS, metavar="N",
@@ -121,7 +129,7 @@ def command_line(args: argparse.Namespace) -> str:
     """The options of this run as a command someone can repeat."""
     parts = ["osdkc", "bench"]
     for opt in ("only", "corpora", "corpus_seconds", "input", "profile", "impl", "fuzz_examples", "soak_seconds",
-                "fault_kinds"):
+                "device_fuzz_cases", "fault_kinds"):
         v = getattr(args, opt)
         if v is not None:
             parts += [f"--{opt.replace('_', '-')}", f"{v:g}" if isinstance(v, float) else str(v)]
@@ -146,6 +154,7 @@ def run_bench(args: argparse.Namespace) -> int:
     pick = 1 if args.quick else 0
     fuzz_examples = args.fuzz_examples or DEFAULTS["fuzz_examples"][pick]
     soak_seconds = args.soak_seconds or DEFAULTS["soak_seconds"][pick]
+    device_fuzz_cases = args.device_fuzz_cases or DEFAULTS["device_fuzz_cases"][pick]
 
     corpora = []
     if "decode" in sections:
@@ -178,6 +187,10 @@ def run_bench(args: argparse.Namespace) -> int:
     if "acceptance" in sections:
         _log(f"acceptance: osdkc soak, {soak_seconds:g} s")
         result["acceptance"] = bench_sections.acceptance(soak_seconds, args.timeout + soak_seconds)
+    if "device_fuzz" in sections:
+        _log(f"device_fuzz: osdkc fuzz --port against osdkc sim over a pty, {device_fuzz_cases} cases at each of "
+             + " and ".join(map(str, bench_sections.DEVICE_FUZZ_BAUDS)) + " baud")
+        result["device_fuzz"] = bench_sections.device_fuzz(device_fuzz_cases, FUZZ_SEED, args.timeout)
     if "reliability" in sections:
         _log(f"reliability: {args.runs} healthy active runs, {args.fault_runs} seeded runs of each fault")
         result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.load_share, args.parallel,
@@ -201,7 +214,8 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "reliability") if s in result)
+    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "reliability")
+               if s in result)
 
 
 def _log(text: str) -> None:

@@ -88,8 +88,24 @@ def targets(result: dict) -> list[dict]:
     out.append({"target": "acceptance receiver < 5% of one core at 100 Hz",
                 "measured": f"{cpu}% of one core" if cpu is not None else "not measured",
                 "met": cpu < 5 if cpu is not None else None})
+    out += _device_fuzz_targets(result.get("device_fuzz"))
     out += _reliability_targets(result.get("reliability"))
     return out
+
+
+def _device_fuzz_targets(dfz: dict | None) -> list[dict]:
+    """The issue asks for the number, with no speed to reach: its verdict says so instead of met or missed."""
+    if dfz is None:
+        return []
+    rows = [r for r in dfz["rows"] if "cases_per_s" in r]
+    measured = "; ".join(f"{r['cases_per_s']:,.0f} cases/s at {r['baud']} baud"
+                         + (f" ({r['share_of_line']:.0%} of what the line carries)" if "share_of_line" in r else "")
+                         for r in rows) or "not measured"
+    failed = [f"{r['baud']} baud: {r['error']}" for r in dfz["rows"] if not r["ok"]]
+    return [{"target": "`osdkc fuzz --port`: cases per second over a pty at "
+                       + " and ".join(str(r["baud"]) for r in dfz["rows"]) + " baud",
+             "measured": measured + (f"; FAILED: {'; '.join(failed)}" if failed else ""),
+             "met": None if dfz["ok"] else False, "verdict": "reported, no target" if dfz["ok"] else None}]
 
 
 def _api_row(api: dict, decoder: str) -> tuple[dict | None, float]:
@@ -139,6 +155,10 @@ def _verdict(met) -> str:
     return "not measured" if met is None else "met" if met else "MISSED"
 
 
+def _target_verdict(t: dict) -> str:
+    return t.get("verdict") or _verdict(t["met"])
+
+
 def _others(result: dict) -> list[tuple[str, str, str]]:
     rows = []
     if api := result.get("api"):
@@ -168,10 +188,26 @@ def _others(result: dict) -> list[tuple[str, str, str]]:
                     f"p99 {lat.get('p99')} ms")
         rows.append(("acceptance receiver, a3-fw3.1 every item at 100 Hz", acc["command"],
                      text + ("" if acc["ok"] else f"; FAILED: {acc.get('error')}")))
+    if dfz := result.get("device_fuzz"):
+        for r in dfz["rows"]:
+            rows.append((f"device fuzzing, {dfz['profile']} simulator over a pty at {r['baud']} baud", r["command"],
+                         _device_fuzz_text(r)))
     if rel := result.get("reliability"):
         rows.append(("reliability of osdkc device: healthy active runs, seeded faults", rel["command"],
                      summary(rel) + f" ({rel['seconds']:.0f} s)"))
     return rows
+
+
+def _device_fuzz_text(r: dict) -> str:
+    text = ""
+    if r.get("cases_per_s"):   # 0 when no case went out (the device was not live at the start)
+        text = (f"{r['cases_per_s']:,.1f} cases/s ({r['cases']} cases: {r['cases'] / r['cases_per_s']:.1f} s sending "
+                f"and checking them, {r['seconds']:g} s with the start-up check and clean-up)")
+        if "bytes_per_case" in r:
+            text += (f"; {r['bytes_per_case']:g} bytes sent per case, which the line carries at "
+                     f"{r['line_cases_per_s']:,.0f} cases/s: {r['share_of_line']:.0%} of it")
+        text += "; no finding" if not r["findings"] else f"; {r['findings']} finding(s)"
+    return text + ("" if r["ok"] else f"; FAILED: {r.get('error')}")
 
 
 # ---- terminal ---------------------------------------------------------------------------------
@@ -198,7 +234,7 @@ def terminal(result: dict) -> str:
     for what, cmd, text in _others(result):
         lines += ["", f"{what}: {cmd}", f"  {text}"]
     lines += ["", "targets:"]
-    lines += [f"  [{_verdict(t['met'])}] {t['target']}: {t['measured']}" for t in result["targets"]]
+    lines += [f"  [{_target_verdict(t)}] {t['target']}: {t['measured']}" for t in result["targets"]]
     return "\n".join(lines)
 
 
@@ -237,7 +273,7 @@ def markdown(result: dict) -> str:
         lines += _md_table(("what", "command", "result"), [[w, f"`{c}`", t] for w, c, t in others], ["---"] * 3)
     lines += ["", "### Targets", ""]
     lines += _md_table(("target", "measured", "verdict"),
-                       [[t["target"], t["measured"], _verdict(t["met"])] for t in result["targets"]], ["---"] * 3)
+                       [[t["target"], t["measured"], _target_verdict(t)] for t in result["targets"]], ["---"] * 3)
     return "\n".join(lines + ["", END])
 
 

@@ -1,5 +1,6 @@
 """The sections of `osdkc bench` besides decoding: the conformance run, the
-differential fuzzer, the acceptance receiver at 100 Hz, and the machine.
+differential fuzzer, the acceptance receiver at 100 Hz, the device fuzzer
+against the simulator over a pty, and the machine.
 
 Each runs the project's own command in a child process (bench_child) and
 reads the numbers that command already reports, so nothing is measured
@@ -17,7 +18,9 @@ import tempfile
 from pathlib import Path
 
 from osdk_conformance.bench import child as bench_child
+from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.paths import ROOT
+from osdk_conformance.sim.simulator import spawned
 
 OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
 
@@ -82,6 +85,64 @@ def acceptance(seconds: float, timeout: float) -> dict:
     if child.code != 0 or not isinstance(soak, dict):
         out["ok"] = False
         out["error"] = _failure(child) if child.code not in (0, 1) or not soak else "frames were lost"
+    return out
+
+
+DEVICE_FUZZ_BAUDS = (921600, 230400)
+DEVICE_FUZZ_PROFILE = "a3-fw3.1"
+DEVICE_FUZZ_HEAD = re.compile(r"^osdkc fuzz: ([^:]+): (\d+) cases in ([\d.]+) s \(([\d.]+) cases/s at (\d+) baud, "
+                              r"([\d.]+) bytes/case\)", re.M)
+
+
+def device_fuzz(cases: int, seed: int, timeout: float, bauds: tuple[int, ...] = DEVICE_FUZZ_BAUDS,
+                profile: str = DEVICE_FUZZ_PROFILE) -> dict:
+    """Cases per second of `osdkc fuzz --port` against a healthy `osdkc sim` over a pty, at each baud rate,
+    beside what the line could carry of the bytes each case took."""
+    rows = [_device_fuzz_at(baud, cases, seed, profile, timeout) for baud in bauds]
+    return {"command": f"osdkc fuzz --port PTY --profile {profile} --cases {cases} --seed {seed} --no-capture",
+            "profile": profile, "seed": seed, "rows": rows, "ok": all(r["ok"] for r in rows)}
+
+
+def _device_fuzz_at(baud: int, cases: int, seed: int, profile: str, timeout: float) -> dict:
+    cmd = ["fuzz", "--profile", profile, "--baud", str(baud), "--cases", str(cases), "--seed", str(seed),
+           "--no-capture"]
+    out: dict = {"baud": baud, "command": "osdkc " + " ".join(cmd[:1] + ["--port", "PTY"] + cmd[1:]), "ok": False}
+    with tempfile.TemporaryDirectory(prefix="osdkc-bench-device-fuzz-") as tmp:
+        stats_path = Path(tmp) / "sim-stats.json"
+        try:
+            # the simulator checks the pty's speed: bytes at another baud would be counted as garbage
+            with spawned("--profile", profile, "--baud", str(baud), "--stats", str(stats_path)) as (url, _):
+                child = bench_child.run([*OSDKC, *cmd, "-q", "--port", url,
+                                         "--findings-dir", str(Path(tmp) / "findings")], timeout)
+        except UsageError as e:
+            out["error"] = str(e)
+            return out
+        try:
+            sim = json.loads(stats_path.read_text())
+        except (OSError, ValueError):
+            sim = {}
+    out["wall_seconds"] = round(child.wall, 1)
+    head = DEVICE_FUZZ_HEAD.search(child.stdout)
+    if head:
+        verdict, n = head[1], int(head[2])
+        out.update({"verdict": verdict, "cases": n, "seconds": float(head[3]), "cases_per_s": float(head[4]),
+                    "findings": int(verdict.split()[0]) if verdict[0].isdigit() else 0})
+        per_case = float(head[6])   # everything the fuzzer sent while fuzzing, over the cases
+        if per_case > 0 and n:
+            out["bytes_per_case"] = round(per_case, 1)
+            out["line_cases_per_s"] = round(baud / 10 / per_case, 1)
+            out["share_of_line"] = round(out["cases_per_s"] / out["line_cases_per_s"], 3)
+    mismatch = (sim.get("rx_bytes_discarded") or {}).get("baud_mismatch")
+    if child.code != 0 or not head:
+        fails = [ln.strip() for ln in child.stdout.splitlines() if ln.startswith(("FAIL", "ERROR"))]
+        out["error"] = ((f"{head[1]} on a healthy simulator" + (f": {fails[0]}" if fails else "")) if head
+                        else _failure(child) if child.code != 0 else "no summary line in the output of osdkc fuzz")
+    elif not sim:
+        out["error"] = "the simulator left no statistics"
+    elif mismatch:
+        out["error"] = f"the simulator read {mismatch} bytes at another baud rate than {baud}"
+    else:
+        out["ok"] = True
     return out
 
 

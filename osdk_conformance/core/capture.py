@@ -9,7 +9,9 @@ File layout (pcapng, little-endian, one section):
                          (if_tsresol 9).
   Enhanced Packet Blocks one per read() or write(): the bytes exactly as they
                          crossed the port, with epb_flags direction (1 inbound
-                         for rx, 2 outbound for tx).
+                         for rx, 2 outbound for tx) and, where the writer
+                         says what the bytes were (`osdkc fuzz --port`: the
+                         case id), an opt_comment.
 
 Every block is written whole and flushed at once; the file is fsynced at
 most `fsync_interval` seconds apart and on close. A process killed at any
@@ -93,13 +95,16 @@ class CaptureWriter:
             os.fsync(self._fh.fileno())
             self._last_sync = now
 
-    def record(self, direction: int, data: bytes, ts_ns: int | None = None) -> None:
+    def record(self, direction: int, data: bytes, ts_ns: int | None = None, comment: str | None = None) -> None:
         if not data:
             return
         ts = time.time_ns() if ts_ns is None else ts_ns
         body = struct.pack("<IIIII", direction, ts >> 32, ts & 0xFFFFFFFF, len(data), len(data))
         body += data + bytes((-len(data)) % 4)
-        body += _options(_option(2, struct.pack("<I", DIRECTION_FLAGS[direction])))
+        opts = [_option(2, struct.pack("<I", DIRECTION_FLAGS[direction]))]
+        if comment:
+            opts.insert(0, _option(1, comment.encode()))
+        body += _options(*opts)
         with self._lock:
             if self._fh.closed:
                 return
@@ -109,8 +114,8 @@ class CaptureWriter:
     def rx(self, data: bytes, ts_ns: int | None = None) -> None:
         self.record(RX, data, ts_ns)
 
-    def tx(self, data: bytes, ts_ns: int | None = None) -> None:
-        self.record(TX, data, ts_ns)
+    def tx(self, data: bytes, ts_ns: int | None = None, comment: str | None = None) -> None:
+        self.record(TX, data, ts_ns, comment)
 
     def close(self) -> None:
         with self._lock:
@@ -124,6 +129,7 @@ class Record:
     ts_ns: int
     direction: int   # RX or TX
     data: bytes
+    comment: str = ""   # the block's opt_comment, when it has one
 
     @property
     def t(self) -> float:
@@ -283,7 +289,8 @@ class CaptureReader:
         if 2 in opts and len(opts[2]) == 4:
             flags = struct.unpack(e + "I", opts[2])[0] & 3
             direction = {1: RX, 2: TX}.get(flags, iface)
-        return Record(ts_ns, direction, body[20:20 + caplen])
+        comment = opts[1].decode("utf-8", "replace") if 1 in opts else ""
+        return Record(ts_ns, direction, body[20:20 + caplen], comment)
 
 
 @contextmanager

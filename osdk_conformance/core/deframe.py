@@ -104,6 +104,17 @@ class Deframer:
     def finish(self) -> Iterator[Event]:
         yield from self._scan(final=True)
 
+    def needs(self) -> int:
+        """How many more bytes the frame it waits for needs (0: it waits for
+        none): what a sender pads with so that the next frame it sends is
+        heard from its first byte."""
+        buf = self._buf
+        if not buf or buf[0] != SOF:
+            return 0
+        if len(buf) < HEADER_LEN:
+            return HEADER_LEN - len(buf)
+        return max(frame_length(bytes(buf[:HEADER_LEN])) - len(buf), 1)
+
     def _drop(self, n: int) -> None:
         del self._buf[:n]
         self._base += n

@@ -80,14 +80,20 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.epilog = EXIT_STATUS
 
 
-def _options(args) -> Options:
-    prof = default_rules().profile(args.profile)
+def expect_rates(profile: str, specs: list[str]) -> dict[str, int] | None:
+    """The --expect-rate ITEM=HZ options (also `osdkc fuzz --port`'s)."""
+    prof = default_rules().profile(profile)
     rates = {}
-    for spec in args.expect_rate:
+    for spec in specs:
         item, _, hz = spec.partition("=")
         if item not in prof.flag_bits or not hz.isdigit():
             raise UsageError(f"--expect-rate {spec}: want ITEM=HZ, ITEM one of {', '.join(prof.flag_bits)}")
         rates[item] = int(hz)
+    return rates or None
+
+
+def _options(args) -> Options:
+    rates = expect_rates(args.profile, args.expect_rate)
     try:
         if args.flight_status_enum:
             default_rules().flight_status_enum(args.profile, args.flight_status_enum)

@@ -74,7 +74,8 @@ class Interrupts:
     further one raises CleanupCut. While the reports are written, signals
     are noted only: writing them is quick and they are what the user keeps."""
 
-    def __init__(self) -> None:
+    def __init__(self, tool: str = "osdkc device") -> None:
+        self.tool = tool   # who speaks on stderr
         self.signals: list[str] = []
         self.mode = "run"   # run | cleanup | report
         self.phase = "passive"               # kept up to date by ActiveRun.enter
@@ -101,11 +102,11 @@ class Interrupts:
         self.signals.append(name)
         self.first_phase = self.first_phase or self.phase
         if self.mode == "report":
-            _say(f"{name} received: finishing the reports")
+            _say(f"{name} received: finishing the reports", self.tool)
             return
         if self.mode == "cleanup":
             if len(self.signals) == 1:
-                _say(f"{name} received during the clean-up: finishing it ({name} again cuts it short)")
+                _say(f"{name} received during the clean-up: finishing it ({name} again cuts it short)", self.tool)
                 return
             exc: KeyboardInterrupt = CleanupCut(name)
         else:
@@ -129,8 +130,8 @@ class Interrupts:
                 raise exc
 
 
-def _say(text: str) -> None:
-    print(f"osdkc device: {text}", file=sys.stderr, flush=True)
+def _say(text: str, tool: str = "osdkc device") -> None:
+    print(f"{tool}: {text}", file=sys.stderr, flush=True)
 
 
 class Commander:
@@ -161,6 +162,8 @@ class Commander:
         timeout = self.ack_timeout if ack_timeout is None else ack_timeout
         value = self.payload(cmd_set, cmd_id, False, self.profile).build({"body": body})
         seq = self._next_seq()
+        with self.an.lock:
+            self.an.acks.pop((2, seq), None)   # an earlier frame's ACK with this SEQ does not answer this one
         frame = encode(cmd_set=cmd_set, cmd_id=cmd_id, value=value, session=2, seq=seq, key=self.key)
         t0 = time.monotonic()
         for _ in range(tries):
@@ -206,6 +209,7 @@ class ActiveRun:
         self.app_id, self.allow_motion = app_id, allow_motion
         self.window, self.motion_seconds = window, motion_seconds
         self.interrupts = interrupts
+        self.tool = interrupts.tool if interrupts else "osdkc device"
         self.results: list[Result] = []
         self.changes = Changes()
         self.phase = "start"
@@ -223,7 +227,7 @@ class ActiveRun:
         if self.interrupts:
             self.interrupts.phase = phase
         if phase in self._holds:
-            _say(f"phase {phase}: holding {HOLD_SECONDS:g} s ({HOLD_ENV})")
+            _say(f"phase {phase}: holding {HOLD_SECONDS:g} s ({HOLD_ENV})", self.tool)
             time.sleep(HOLD_SECONDS)
         if phase in self._raises:
             raise RuntimeError(f"raised at phase {phase} by the test hook {RAISE_ENV}")
@@ -411,7 +415,8 @@ class ActiveRun:
         try:
             if interrupted:
                 _say(f"run ended during phase {self.phase}: movement commands stopped; "
-                     + (f"now: {' and '.join(steps)} (SIGINT again cuts this short)" if steps else "nothing to undo"))
+                     + (f"now: {' and '.join(steps)} (SIGINT again cuts this short)" if steps else "nothing to undo"),
+                     self.tool)
             if steps:
                 self._await_port()
             self.enter("release")
@@ -429,7 +434,7 @@ class ActiveRun:
         except CleanupCut as e:
             left = [s for s in steps if s not in done]
             self.cleanup_cut = f"clean-up cut short by a second {e.signame}: not done: {', '.join(left) or 'none'}"
-            _say(self.cleanup_cut)
+            _say(self.cleanup_cut, self.tool)
 
     def _ids(self) -> set[str]:
         return {r.id for r in self.results}

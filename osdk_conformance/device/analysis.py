@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 import threading
+from bisect import bisect_left
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -390,6 +391,31 @@ class Analyzer:
             out[item] = {"expected_hz": rates.get(item, 0), "frames": n,
                          "measured_hz": None if measured is None else round(measured, 2), "clock": clock}
         return out
+
+    def forget_before(self, t: float) -> int:
+        """Drop what arrived before `t` from the time series (a session of
+        hours, `osdkc fuzz --port`, keeps a bounded window): the broadcast
+        list, item times, traces, reads, incidents, commands sent and their
+        ACKs, and the epochs between the first (what a clean-up restores) and
+        the current one. Returns how many broadcast entries went, for a
+        reader that indexes `bcast`."""
+        with self.lock:
+            cut = bisect_left(self.bcast, t, key=lambda b: b[0])
+            del self.bcast[:cut]
+            for item, times in self.item_times.items():
+                k = bisect_left(times, t)
+                del times[:k]
+                del self.item_clock[item][:k]
+            for trace in self.traces.values():
+                del trace[:bisect_left(trace, t, key=lambda s: s[0])]
+            del self.rx_chunks[:bisect_left(self.rx_chunks, t, key=lambda c: c[0])]
+            self.incidents = [i for i in self.incidents if i[0] >= t]
+            for table in (self.sent, self.acks):
+                for key in [k for k, v in table.items() if v[0] < t]:
+                    del table[key]
+            if len(self.epochs) > 2:
+                self.epochs = [self.epochs[0]] + [e for e in self.epochs[1:-1] if e.start >= t] + [self.epochs[-1]]
+            return cut
 
     def frames_between(self, t0: float, t1: float) -> list[tuple[float, int, int]]:
         return [b for b in self.bcast if t0 <= b[0] <= t1]

@@ -89,17 +89,18 @@ class Port:
                     self.cap.rx(data, ts)
                 self.an.feed_rx(ts / 1e9, data)
 
-    def write(self, data: bytes) -> None:
+    def write(self, data: bytes, comment: str | None = None) -> None:
         """Record and register the bytes, then send them. In that order: an ACK
         that comes back at once finds its command (else it is dropped and the
         command sent again), and the capture keeps the order the device saw.
-        Bytes a failing write may have sent in part stay recorded."""
+        Bytes a failing write may have sent in part stay recorded. `comment`
+        goes into the capture with them (a fuzz case's id)."""
         with self.critical(), self.wlock:
             if self.ser is None:
                 raise PortDown("the port is down")
             ts = time.time_ns()
             if self.cap:
-                self.cap.tx(data, ts)
+                self.cap.tx(data, ts, comment)
             self.an.feed_tx(ts / 1e9, data)
             try:
                 self.ser.write(data)

@@ -361,6 +361,26 @@ def _strategies(profiles: Sequence[str], ops: Sequence[str]):
     return st.one_of([example(op) for op in ops])
 
 
+def drawn_inputs(op: str, profile: str, count: int, seed: int) -> list[dict]:
+    """Up to `count` inputs of `op` for `profile`, drawn from the strategies
+    above (Hypothesis' generate phase only; the same seed draws the same
+    inputs): how `osdkc fuzz --port` gets its generated frames and streams
+    from the one generator the differential fuzzer uses."""
+    from hypothesis import HealthCheck, Phase, Verbosity, given, settings
+    from hypothesis import seed as hypothesis_seed
+
+    drawn: list[dict] = []
+
+    def keep(example) -> None:
+        drawn.append(example[2])
+
+    test = settings(max_examples=count, deadline=None, database=None, phases=(Phase.generate,),
+                    verbosity=Verbosity.quiet, suppress_health_check=list(HealthCheck))(
+        hypothesis_seed(seed)(given(_strategies([profile], [op]))(keep)))
+    test()
+    return drawn
+
+
 def _combinations() -> list[dict]:
     """The documented control mode combinations (rules.yaml): mask value of bits 7-3."""
 
@@ -672,7 +692,7 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     p.add_argument("--op", action="append", choices=FUZZ_OPS, metavar="OP",
                    help=f"only this operation (repeatable; {', '.join(FUZZ_OPS)})")
     p.add_argument("--profile", action="append", choices=profiles, metavar="PROFILE", help="only this profile (repeatable)")
-    p.add_argument("--timeout", type=positive_float, default=DEFAULT_TIMEOUT, metavar="S",
+    p.add_argument("--timeout", type=positive_float, metavar="S",
                    help=f"seconds per request (default {DEFAULT_TIMEOUT:g})")
 
 
@@ -719,7 +739,7 @@ def run_fuzz(args: argparse.Namespace) -> int:
             raise UsageError(f"--out {args.out}: directory {parent} does not exist")
     human = sys.stdout if args.out else sys.stderr
 
-    fuzzees = start_fuzzees(commands, timeout=args.timeout)
+    fuzzees = start_fuzzees(commands, timeout=args.timeout or DEFAULT_TIMEOUT)
     try:
         outcome = fuzz(fuzzees, ops=args.op, profiles=args.profile, seconds=seconds,
                        max_examples=args.max_examples, seed=args.seed)

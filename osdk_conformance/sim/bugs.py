@@ -31,7 +31,7 @@ RECEIVE_BUFFER = 300
 """Bytes in DJI's SDK receive buffer: a longer frame overruns it."""
 
 REBOOT_PAUSE_S = 0.3
-"""How long a reboot keeps the simulator deaf and silent."""
+"""How long a reboot (a planted reset or a restart) keeps the simulator deaf and silent."""
 
 KNOWN_COMMAND_SETS = frozenset(COMMAND_SET.values())
 
@@ -130,6 +130,15 @@ class PlantedBugs:
         self.silent = False
         if self.pending is not None:
             self.pending = PendingBytes()
+
+    def power_cycled(self) -> None:
+        """The simulator was restarted from outside (Simulator.request_restart):
+        a reboot that a hang does not survive either. The pause that follows is
+        the simulator's own, so a planted reset's pause still running ends here.
+        Nothing is recorded: a restart is not a bug's doing."""
+        self.hung = False
+        self.resume_at = None
+        self.rebooted()
 
     def _record(self, name: str, now: float, trigger: str, raw: bytes) -> None:
         self.stats["bug_triggers"][name] += 1

@@ -15,7 +15,8 @@ bytes, bit flips, dropped bytes, truncated frames, bad CRCs, duplicated
 frames, jitter, rate drift, implausible values, another profile's layout,
 a stalled stream, an unplugged-and-back port, a baud rate mismatch.
 Planted firmware bugs (--bug, sim/bugs.py) model receive-path bugs of real
-flight controllers for a device fuzzer to find.
+flight controllers for a device fuzzer to find; SIGHUP restarts it (a power
+cycle), as a user brings a hung flight controller back.
 """
 from __future__ import annotations
 
@@ -49,7 +50,7 @@ from osdk_conformance.core.options import (baud_rate, non_negative_float, non_ne
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode, key_option, open_frame
 from osdk_conformance.reference.values import broadcast_data, cut
-from osdk_conformance.sim.bugs import BUGS, PlantedBugs
+from osdk_conformance.sim.bugs import BUGS, REBOOT_PAUSE_S, PlantedBugs
 
 R_EARTH = 6378137.0
 G = 9.80665
@@ -427,6 +428,11 @@ class SimConfig:
 DRAIN_SETTLE_S = 0.05
 DRAIN_STUCK_S = 1.0
 
+MAX_WAIT_S = 0.05
+"""The longest the run loop sleeps in select(): a restart requested from a
+signal handler or another thread cannot wake it, so this bounds how late the
+restart (and a stop) is acted on."""
+
 
 class Simulator:
     def __init__(self, cfg: SimConfig, transport) -> None:
@@ -449,7 +455,7 @@ class Simulator:
         self.outbuf = bytearray()
         self.stats = {"frames_sent": 0, "broadcast_frames": 0, "acks_sent": 0, "bytes_sent": 0,
                       "frames_dropped_tx_full": 0, "commands_received": 0, "frames_rejected": 0,
-                      "movement_commands": 0, "movement_commands_encrypted": 0,
+                      "movement_commands": 0, "movement_commands_encrypted": 0, "restarts": 0,
                       "faults": {f: 0 for f in FAULTS},
                       # Every byte the host sent is accounted for: heard as part of a frame, or
                       # discarded for a reason (not_a_frame is settled at exit, see rx_accounting).
@@ -467,7 +473,12 @@ class Simulator:
         self.unplugged_until: float | None = None
         self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
         self._current_raw = b""
-        self.boot = self.start   # the time stamp item counts from here; a planted reset moves it
+        self.boot = self.start   # the time stamp item counts from here; a reboot moves it
+        self.resume_at: float | None = None   # a reboot keeps it deaf and silent until then
+        # Requested by request_restart (maybe in a signal handler or another thread),
+        # acted on by the run loop only: the one place the state changes.
+        self.restart_requests = 0
+        self.restart_requests_done = 0
         self.bugs = PlantedBugs(tuple(cfg.bugs), self.stats, self.start) if cfg.bugs else None
         self.broadcast_log = open(cfg.log_broadcast, "w", buffering=1) if cfg.log_broadcast else None
 
@@ -632,17 +643,21 @@ class Simulator:
             if halted or reboot:
                 self.stats["rx_bytes_discarded"]["stalled"] += bugs.received_after(ev)
                 if reboot:
-                    self._reboot()
+                    self._reboot(bugs.resume_at)
+                    bugs.rebooted()
                 return
             bugs.consumed(ev)
         bugs.overrun_pending(now)
 
-    def _reboot(self) -> None:
-        """What a planted reset loses: the SEQ, the clock, activation,
-        control authority, the rates, the commands, the receive buffer
-        (and a wedged command handler)."""
+    def _reboot(self, resume_at: float) -> None:
+        """What every reboot (a planted reset, a restart) loses: the SEQ, the
+        clock, activation, control authority, the rates, the commands, the
+        receive buffer. It is deaf and silent until `resume_at`, when its
+        clock starts again. The planted bugs' own state is the caller's to
+        reset (PlantedBugs.rebooted, .power_cycled)."""
+        self.resume_at = resume_at
         self.seq = 0
-        self.boot = self.bugs.resume_at
+        self.boot = resume_at
         self.activated = False
         self.control = "rc"
         self.pending = None
@@ -652,7 +667,26 @@ class Simulator:
         self.vehicle.command = None
         self.last_ack.clear()
         self.deframer = Deframer()
-        self.bugs.rebooted()
+
+    def request_restart(self) -> int:
+        """Ask for a restart, a power cycle, as a user pulls the power of a
+        hung flight controller: the run loop performs it within MAX_WAIT_S.
+        Only counts the request, so it is safe in a signal handler and from
+        another thread. Returns the request's number: the restart asked for
+        is done once `restart_requests_done` has reached it. Requests made
+        before the loop gets to them make one restart."""
+        self.restart_requests += 1
+        return self.restart_requests
+
+    def _power_cycle(self, now: float) -> None:
+        """A restart: a reboot that also ends a hang or a wedged command
+        handler, loses what was still queued to send, and resumes after
+        REBOOT_PAUSE_S like a boot, with or without planted bugs."""
+        if self.bugs is not None:
+            self.bugs.power_cycled()
+        self.outbuf.clear()
+        self._reboot(now + REBOOT_PAUSE_S)
+        self.stats["restarts"] += 1
 
     def on_received(self, data: bytes, now: float, stalled: bool) -> None:
         """Bytes read from the host. The line speed is looked at now, when
@@ -778,8 +812,9 @@ class Simulator:
     # ---- main loop -------------------------------------------------------
 
     def _halted(self, now: float) -> bool:
-        """A planted bug keeps the simulator deaf and silent (hung, or rebooting)."""
-        return self.bugs is not None and self.bugs.halted(now)
+        """Deaf and silent: rebooting, or hung by a planted bug."""
+        return ((self.resume_at is not None and now < self.resume_at)
+                or (self.bugs is not None and self.bugs.halted(now)))
 
     def _check_speed(self) -> None:
         if self.cfg.baud is None:
@@ -793,6 +828,10 @@ class Simulator:
         period = 0.0
         while self.running:
             now = time.monotonic()
+            requested = self.restart_requests
+            if requested != self.restart_requests_done:
+                self._power_cycle(now)
+                self.restart_requests_done = requested
             elapsed = now - self.start
             if cfg.exit_after is not None and elapsed >= cfg.exit_after:
                 break
@@ -807,11 +846,11 @@ class Simulator:
             stalled = (cfg.stall_at is not None and elapsed >= cfg.stall_at) or self._halted(now)
             rate = self.frame_rate()
             period = 1.0 / (rate * (1.0 + cfg.rate_drift)) if rate > 0 else 0.0
-            wait = 0.1
+            wait = MAX_WAIT_S
             if self.broadcasting and not stalled and period:
                 wait = max(0.0, min(wait, self.send_at - now))
-            elif self.bugs is not None and self.bugs.resume_at is not None and now < self.bugs.resume_at:
-                wait = min(wait, self.bugs.resume_at - now)   # a planted reset ends on time
+            elif self.resume_at is not None and now < self.resume_at:
+                wait = min(wait, self.resume_at - now)   # a reboot ends on time
             rfds = self.t.read_fds()
             wfds = [rfds[-1]] if self.outbuf and rfds else []
             try:
@@ -897,7 +936,12 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--unplug-at", type=non_negative_float, metavar="S", help="close the port after S seconds ...")
     f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S", help="... and reopen it S seconds later")
     f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
-    b = ap.add_argument_group("planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)")
+    b = ap.add_argument_group(
+        "planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)",
+        "SIGHUP (kill -HUP PID) restarts the simulated flight controller, as pulling its power does, "
+        "bugs planted or not: a hang ends; SEQ, time stamp, activation, control authority, rates and "
+        f"what was not yet sent are lost; the broadcast resumes {REBOOT_PAUSE_S:g} s later. A device "
+        "fuzzer's --restart-cmd can use it.")
     b.add_argument("--bug", action="append", default=[], choices=tuple(BUGS), metavar="NAME",
                    help="plant this bug (repeatable; default none). "
                         + "; ".join(f"{name}: {what}" for name, what in BUGS.items()))
@@ -969,9 +1013,13 @@ def run_sim(args: argparse.Namespace) -> int:
     def go(signum, frame):
         sim.broadcasting = True
 
+    def power_cycle(signum, frame):
+        sim.request_restart()
+
     signal.signal(signal.SIGINT, stop)
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGUSR1, go)
+    signal.signal(signal.SIGHUP, power_cycle)
     print(transport.url, flush=True)
     print(f"osdkc sim: {args.profile} flight controller on {transport.url}"
           + (f" (pty {transport.path})" if isinstance(transport, PtyTransport) and args.link else ""),

@@ -1,0 +1,155 @@
+"""What a device fuzzing session leaves behind: the verdict's results, a
+reproducer file and a vector group per confirmed finding, and the JUnit and
+HTML reports (with the liveness timeline).
+
+The verdict claims no more than was checked: each case kind is a result
+(PASS with how many cases were sent and checked, FAIL when a finding
+followed one, SKIP with the reason when none was sent), cases withheld for
+safety are counted, and a finding that could not be replayed says so.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from pathlib import Path
+
+from osdk_conformance.core.deframe import Deframer, Frame
+from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS
+from osdk_conformance.device.fuzz_session import Finding, SessionOutcome
+from osdk_conformance.device.plots import line_chart
+from osdk_conformance.harness.fuzz import regression_vector, suite_document
+from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
+
+REPRO_FORMAT = "osdkc-device-fuzz-reproducer/1"
+
+
+def results_of(out: SessionOutcome, repro_paths: dict[int, Path]) -> list[Result]:
+    res: list[Result] = []
+    if out.start_problem:
+        res.append(Result("fuzz", "fuzz.start", ERROR, f"the device was not live before the first case: "
+                          f"{out.start_problem}; nothing was fuzzed", kind="not_live"))
+    if out.port_lost:
+        res.append(Result("fuzz", "fuzz.port", FAIL, out.port_lost + "; the session ended there", kind="port_lost"))
+    by_kind: dict[str, list[Finding]] = {}
+    for f in out.findings:
+        for k in sorted(set(f.kinds) | f.repeated_kinds):
+            by_kind.setdefault(k, []).append(f)
+    for kind, what in KINDS.items():
+        sent, withheld = out.sent.get(kind, 0), out.withheld.get(kind, 0)
+        held = f"; {withheld} withheld for safety" if withheld else ""
+        cid = f"fuzz.cases.{kind}"
+        if by_kind.get(kind):
+            nums = ", ".join(str(f.number) for f in by_kind[kind])
+            res.append(Result("cases", cid, FAIL, f"{sent} sent{held}; finding(s) {nums} followed cases of this kind",
+                              {"sent": sent, "withheld": withheld, "what": what}, kind="finding"))
+        elif sent:
+            res.append(Result("cases", cid, PASS, f"{sent} sent and checked, no finding{held}",
+                              {"sent": sent, "withheld": withheld, "what": what}))
+        else:
+            why = (f"movement control {out.motion}" if kind in MOTION_KINDS
+                   else "none sent (the budget ended first, or --kind left it out)")
+            if withheld:
+                why = f"every case of this kind was withheld for safety ({withheld})"
+            res.append(Result("cases", cid, SKIP, why, {"withheld": withheld, "what": what}))
+    for f in out.findings:
+        res.append(finding_result(f, repro_paths.get(f.number)))
+    if out.checks:
+        failed = sum(1 for f in out.findings) + sum(f.repeats for f in out.findings)
+        res.append(Result("liveness", "fuzz.liveness", PASS if not out.findings else FAIL,
+                          f"{out.checks} checks after cases, {failed} failed, {out.retried_checks} needed a second "
+                          "probe after padding", {"checks": out.checks, "retried": out.retried_checks}))
+    return res
+
+
+def finding_result(f: Finding, path: Path | None) -> Result:
+    state = {True: "confirmed by replay from the capture" if f.from_capture else "confirmed by replay",
+             False: f"NOT confirmed: {f.why_unconfirmed}", None: f"not replayed: {f.why_unconfirmed}"}[f.confirmed]
+    cases = f.reproducer or f.suspects
+    size = sum(len(w) for c in cases for w in c.writes)
+    msg = (f"{f.check.describe()}, after {f.suspects[-1].id}; {state}"
+           + (f"; minimised to {len(cases)} case(s), {size} byte(s) in {sum(len(c.writes) for c in cases)} "
+              f"write(s) ({f.trials} trials)" if f.confirmed else "")
+           + (f"; the same symptoms {f.repeats} more time(s), after {', '.join(f.repeated_after)}"
+              + ("…" if f.repeats > len(f.repeated_after) else "") if f.repeats else "")
+           + (f"; reproducer {path}" if path else ""))
+    details = {"symptoms": f.check.symptoms, "after": [c.id for c in f.suspects], "repeated_after": f.repeated_after,
+               "reproducer": [c.to_json() for c in cases], "trials": f.trials}
+    return Result("findings", f"fuzz.finding.{f.number}", FAIL, msg, details, kind="+".join(f.check.symptoms))
+
+
+def reproducer_doc(f: Finding, profile: str, seed: int, meta: dict) -> dict:
+    cases = f.reproducer or f.suspects
+    return {"format": REPRO_FORMAT, "profile": profile, "seed": seed, "finding": f.number,
+            "symptoms": f.check.symptoms, "description": f.check.describe(),
+            "confirmed": f.confirmed, "minimised": bool(f.confirmed and f.reproducer),
+            "trials": f.trials, "run": meta, "cases": [c.to_json() for c in cases],
+            "replay": f"osdkc fuzz --port PORT --profile {profile} --replay THIS_FILE"}
+
+
+def vector_group(f: Finding, profile: str, seed: int) -> dict | None:
+    """The reproducer as a decode_stream vector (what the receive path must
+    make of these bytes), when it is a confirmed byte sequence: the
+    decode_stream operation of a testee is the device's receive path."""
+    if not f.confirmed:
+        return None
+    writes = [w for c in (f.reproducer or f.suspects) for w in c.writes]
+    data = b"".join(writes)
+    chunks, pos = [], 0
+    for w in writes[:-1]:
+        pos += len(w)
+        chunks.append(len(w))
+    frames = sum(isinstance(e, Frame) for e in Deframer().feed(data))
+    comment = (f"found by osdkc fuzz --port (seed {seed}): after these bytes the device failed its liveness "
+               f"check: {f.check.describe()}; {frames} complete frame(s) in them")
+    return regression_vector("decode_stream", profile, {"hex": data.hex(), "chunks": chunks}, comment)
+
+
+def write_findings(out: SessionOutcome, directory: Path, profile: str, seed: int, meta: dict) -> dict[int, Path]:
+    """A reproducer (and, when it maps, a vector file) per finding; returns the reproducer paths."""
+    paths: dict[int, Path] = {}
+    if not out.findings:
+        return paths
+    directory.mkdir(parents=True, exist_ok=True)
+    for f in out.findings:
+        doc = reproducer_doc(f, profile, seed, meta)
+        digest = hashlib.sha256(json.dumps(doc["cases"]).encode()).hexdigest()[:8]
+        p = directory / f"finding-{f.number}-{digest}.repro.json"
+        p.write_text(json.dumps(doc, indent=1) + "\n", encoding="utf-8")
+        paths[f.number] = p
+        group = vector_group(f, profile, seed)
+        if group is not None:
+            (directory / f"finding-{f.number}-{digest}.vectors.json").write_text(
+                json.dumps(suite_document(group), indent=1, sort_keys=True, allow_nan=False) + "\n", encoding="utf-8")
+    return paths
+
+
+def timeline_html(live, out: SessionOutcome) -> str:
+    """The liveness timeline, per second: broadcast frames, checks and failed
+    checks, the version query's round trip."""
+    if not live.bins:
+        return "<h2>Liveness timeline</h2><p>No check was made.</p>"
+    t0 = min(live.bins)
+    rows = sorted((s - t0, r) for s, r in live.bins.items())
+    rate = [(x, r[4]) for x, r in rows]
+    checks = [(x, r[0]) for x, r in rows]
+    failed = [(x, r[1]) for x, r in rows if r[1]]
+    rtt = [(x, r[2] / r[3]) for x, r in rows if r[3]]
+    return "\n".join([
+        "<h2>Liveness timeline</h2>",
+        f"<p>{out.checks} checks; {len(out.findings)} finding(s); every case's bytes are in the capture with "
+        "its id as the block comment.</p>",
+        line_chart("Broadcast frames per second", {"broadcast": rate}, ylabel="Hz"),
+        line_chart("Version query round trip (mean per second)", {"round trip": rtt}, ylabel="ms"),
+        line_chart("Checks per second, and failed checks", {"checks": checks, "failed": _spikes(failed)},
+                   ylabel="per second"),
+    ])
+
+
+def _spikes(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Points drawn as spikes from zero (a polyline through failed checks only would join them)."""
+    out: list[tuple[float, float]] = []
+    for x, y in points:
+        if math.isfinite(x):
+            out += [(x, 0.0), (x, y), (x, 0.0)]
+    return out
