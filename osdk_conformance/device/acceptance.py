@@ -22,11 +22,12 @@ import time
 from pathlib import Path
 
 from osdk_conformance.core.capture import CaptureError, CaptureWriter, RX, default_capture_path, open_capture
-from osdk_conformance.core.errors import UsageError, cannot_read, one_line
+from osdk_conformance.core.errors import UsageError, cannot_read
 from osdk_conformance.core.options import baud_rate, fraction, non_negative_float, positive_float, uint32
 from osdk_conformance.core.rules import RulesError, default_rules
 from osdk_conformance.core.wire import key_option
-from osdk_conformance.device.active import ActiveRun, Commander, EXIT_BY_SIGNAL, Interrupts, not_reached
+from osdk_conformance.device.active import (ActiveRun, Commander, EXIT_BY_SIGNAL, Interrupts, not_reached,
+                                             to_the_end)
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.checks import Options, passive_results
 from osdk_conformance.device.plots import checks_html, plots_html
@@ -165,8 +166,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
 
     results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
     run: ActiveRun | None = None
-    error = ""
-    try:
+    with to_the_end(interrupts, port, an, cap) as ending:
         if cap:
             print(f"osdkc device: capturing to {cap.path}", file=sys.stderr, flush=True)
         port.start(cap)
@@ -179,16 +179,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
             run = ActiveRun(Commander(port, an, args.profile, key, args.encrypt), an, opts, args.app_id,
                             args.allow_motion, args.active_window, args.motion_seconds, interrupts)
             run.run()
-    except KeyboardInterrupt:
-        pass   # the signal is in interrupts.signals; ActiveRun has cleaned up
-    except Exception as e:   # a bug of ours: the clean-up ran, the results so far are still reported
-        error = f"{type(e).__name__}: {one_line(e)}"
-    finally:
-        interrupts.mode = "report"
-        port.close()
-        an.finish(port.state.t_end)
-        if cap:
-            cap.close()
+    error = ending.error
     with an.lock:
         results += passive_results(an, opts, port.state)
     signame = interrupts.first

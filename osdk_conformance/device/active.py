@@ -19,6 +19,7 @@ import signal
 import sys
 import time
 from dataclasses import dataclass
+from typing import Iterator
 
 from osdk_conformance.core.commands import ack_code_text
 from osdk_conformance.core.errors import exit_status_of_signal, one_line
@@ -128,6 +129,34 @@ class Interrupts:
             if not self._deferring and self._pending is not None:
                 exc, self._pending = self._pending, None
                 raise exc
+
+
+class Ending:
+    """How a live run ended: `error` is a bug of ours, "" when none (a signal
+    is in `Interrupts.signals`)."""
+
+    error = ""
+
+
+@contextlib.contextmanager
+def to_the_end(interrupts: Interrupts, port, an, cap) -> Iterator[Ending]:
+    """The body of a live run (`osdkc device`, `osdkc fuzz --port`), whose own
+    clean-up has run however it ended: a signal or a bug of ours ends it
+    here, not the process, so that the reports are still written; then the
+    port and the capture are closed, and signals only noted."""
+    ending = Ending()
+    try:
+        yield ending
+    except KeyboardInterrupt:
+        pass
+    except Exception as e:
+        ending.error = f"{type(e).__name__}: {one_line(e)}"
+    finally:
+        interrupts.mode = "report"
+        port.close()
+        an.finish(port.state.t_end)
+        if cap:
+            cap.close()
 
 
 def _say(text: str, tool: str = "osdkc device") -> None:

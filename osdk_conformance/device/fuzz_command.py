@@ -25,7 +25,7 @@ from osdk_conformance.core.capture import CaptureWriter
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.core.options import baud_rate, fraction, positive_float, positive_int, uint32
 from osdk_conformance.device.acceptance import MOTION_WARNING, expect_rates
-from osdk_conformance.device.active import EXIT_BY_SIGNAL, Commander, Interrupts
+from osdk_conformance.device.active import EXIT_BY_SIGNAL, Commander, Interrupts, to_the_end
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS, FuzzCase, safe
 from osdk_conformance.device.fuzz_report import REPRO_FORMAT, results_of, timeline_html, write_findings
@@ -177,23 +177,16 @@ def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions
     cmd = Commander(port, an, profile, None, False, ack_timeout=sopts.liveness.ack_timeout)
     session = FuzzSession(port, an, sopts, cmd, cap.path if cap else None, _restart_command(args.restart_cmd),
                           interrupts, progress=lambda text: print(f"osdkc fuzz: {text}", file=sys.stderr, flush=True))
-    error = ""
     out: SessionOutcome = session.out
-    try:
+    with to_the_end(interrupts, port, an, cap) as ending:
         port.start(cap)
         out = session.replay(replay) if replay is not None else session.run()
-    except KeyboardInterrupt:
-        pass   # in interrupts.signals; the session has cleaned up
-    except Exception as e:   # a bug of ours: the clean-up ran, what was found is still reported
-        error = f"{type(e).__name__}: {one_line(e)}"
-    finally:
-        interrupts.mode = "report"
-        port.close()
-        an.finish(port.state.t_end)
-        if cap:
-            cap.close()
+    error = ending.error
+    sent = sum(out.sent.values())
     meta = {"profile": profile, "port": args.port, "baud": args.baud, "seed": seed,
             "capture": str(cap.path) if cap else "none", "seconds": round(out.seconds, 1),
+            "cases": sent, "cases per s": round(sent / out.case_seconds, 1) if out.case_seconds else 0,
+            "bytes per case": round(out.bytes_sent / sent, 1) if sent else 0,
             "motion": out.motion, "restart": args.restart_cmd or "none (waits for recovery)"}
     if replay is None:
         results = results_of(out, write_findings(out, findings_dir, profile, seed, meta))
