@@ -44,7 +44,7 @@ from osdk_conformance.core.deframe import HEADER_LEN, MAX_LEN, SOF, split_chunks
 from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.core.wire import encode
 from osdk_conformance.harness.fuzz import drawn_inputs
-from osdk_conformance.harness.vectors import load_cases
+from osdk_conformance.harness.vectors import VECTORS_DIR, load_cases
 
 KINDS: dict[str, str] = {
     "vector.frame": "the golden vectors' invalid frames: each header rule broken, bad CRC-16/32, impossible "
@@ -77,6 +77,9 @@ MOTION_KINDS = frozenset({"movement.zero"})
 ZERO_VELOCITY_MODES = tuple(range(0x48, 0x50))
 """Control mode bytes of horizontal velocity, vertical velocity and yaw rate
 (rules.yaml combination 4, any frame bits): zero setpoints hold position."""
+VECTOR_FILES = ("frames.json", "streams.json", "payloads.json")
+"""The suites holding the frames, streams and command values cases come from
+(not broadcast.json: broadcast values are what the device sends, not receives)."""
 GENERATED_BATCH = 64
 SEED_STRIDE = 7919
 LENGTH_BOUNDARIES = (0, 1, 11, 12, 13, 15, 16, 17, 18, 19, 64, 255, 256, 299, 300, 301, 512, 1022, MAX_LEN)
@@ -192,7 +195,7 @@ class Builder:
 
     def vector_cases(self) -> dict[str, list[tuple[tuple[bytes, ...], str]]]:
         out: dict[str, list] = {"vector.frame": [], "vector.stream": [], "vector.payload": []}
-        for c in load_cases():
+        for c in load_cases([VECTORS_DIR / name for name in VECTOR_FILES]):
             if c.profile != self.profile:
                 continue
             if c.operation == "decode_frame" and c.result == "invalid":

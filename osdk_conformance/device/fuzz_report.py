@@ -95,10 +95,7 @@ def vector_group(f: Finding, profile: str, seed: int) -> dict | None:
         return None
     writes = [w for c in (f.reproducer or f.suspects) for w in c.writes]
     data = b"".join(writes)
-    chunks, pos = [], 0
-    for w in writes[:-1]:
-        pos += len(w)
-        chunks.append(len(w))
+    chunks = [len(w) for w in writes[:-1]]
     frames = sum(isinstance(e, Frame) for e in Deframer().feed(data))
     comment = (f"found by osdkc fuzz --port (seed {seed}): after these bytes the device failed its liveness "
                f"check: {f.check.describe()}; {frames} complete frame(s) in them")

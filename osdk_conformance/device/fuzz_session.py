@@ -347,10 +347,10 @@ class FuzzSession:
     def _healthy(self) -> bool:
         try:
             self.live.pad("padding while waiting for recovery", 1024)
-            value, _ = self.live._ask("recovery")
+            value, _ = self.live.ask("recovery")
         except PortDown:
             return False
-        if value is None or self.live._version_of(value) != self.live.version:
+        if value is None or self.live.version_of(value) != self.live.version:
             return False
         with self.an.lock:
             last = self.an.bcast[-1][0] if self.an.bcast else None

@@ -105,7 +105,7 @@ class Liveness:
             with self.an.lock:
                 need = self.an.tx_deframer.needs()
 
-    def _ask(self, after: str) -> tuple[bytes | None, float]:
+    def ask(self, after: str) -> tuple[bytes | None, float]:
         self.seq = self.seq % PROBE_SEQS + 1   # below the session's commands' and the cases' SEQs
         key = (PROBE_SESSION, self.seq)
         with self.an.lock:
@@ -116,7 +116,7 @@ class Liveness:
         ack = self.an.wait_ack(PROBE_SESSION, self.seq, self.opts.ack_timeout)
         return (ack[3] if ack else None), time.monotonic() - t0
 
-    def _version_of(self, value: bytes) -> tuple[bytes, int] | None:
+    def version_of(self, value: bytes) -> tuple[bytes, int] | None:
         try:
             body = osdk_payload(0, 0, True, self.profile).parse(value).body
         except Exception:  # noqa: BLE001 - any value that is not a version reply
@@ -135,12 +135,12 @@ class Liveness:
         else:
             return f"no broadcast frame within {max(self.opts.stall_timeout * 3, 2.0):g} s"
         self.pad("padding before the first probe", MAX_LEN + 1)
-        value, _ = self._ask("start")
+        value, _ = self.ask("start")
         if value is None:
-            value, _ = self._ask("start")
+            value, _ = self.ask("start")
         if value is None:
             return f"the version query was not answered within {self.opts.ack_timeout:g} s (two tries)"
-        self.version = self._version_of(value)
+        self.version = self.version_of(value)
         if self.version is None:
             return f"the version reply does not decode ({value.hex()})"
         self.restarted_window()
@@ -149,17 +149,17 @@ class Liveness:
     def check(self, after: str) -> Check:
         c = Check(time.time(), after)
         self.pad(f"padding after {after}")
-        value, waited = self._ask(after)
+        value, waited = self.ask(after)
         if value is None:
             self.pad(f"padding after {after}, before a second probe", MAX_LEN + 1)
             c.retried = True
-            value, waited = self._ask(after)
+            value, waited = self.ask(after)
         if value is None:
             c.symptoms.append("no_ack")
             c.details["no_ack"] = f"no ACK within {self.opts.ack_timeout:g} s, twice"
         else:
             c.ack_s = waited
-            got = self._version_of(value)
+            got = self.version_of(value)
             if got != self.version:
                 c.symptoms.append("bad_ack")
                 c.details["bad_ack"] = (f"reply {value.hex()}" if got is None

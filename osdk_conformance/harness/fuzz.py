@@ -49,6 +49,7 @@ the written vector.
 from __future__ import annotations
 
 import argparse
+import functools
 import hashlib
 import json
 import random
@@ -361,6 +362,12 @@ def _strategies(profiles: Sequence[str], ops: Sequence[str]):
     return st.one_of([example(op) for op in ops])
 
 
+@functools.lru_cache(maxsize=None)
+def _strategy_of(op: str, profile: str):
+    """One operation's strategy, built once: building one costs about as much as drawing 64 examples."""
+    return _strategies([profile], [op])
+
+
 def drawn_inputs(op: str, profile: str, count: int, seed: int) -> list[dict]:
     """Up to `count` inputs of `op` for `profile`, drawn from the strategies
     above (Hypothesis' generate phase only; the same seed draws the same
@@ -376,7 +383,7 @@ def drawn_inputs(op: str, profile: str, count: int, seed: int) -> list[dict]:
 
     test = settings(max_examples=count, deadline=None, database=None, phases=(Phase.generate,),
                     verbosity=Verbosity.quiet, suppress_health_check=list(HealthCheck))(
-        hypothesis_seed(seed)(given(_strategies([profile], [op]))(keep)))
+        hypothesis_seed(seed)(given(_strategy_of(op, profile))(keep)))
     test()
     return drawn
 
