@@ -22,7 +22,7 @@
 #include <string.h>
 #include <time.h>
 
-#include "jsonread.h"
+#include "okit.h"
 #include "osdk_acks.h"
 #include "osdk_crc.h"
 #include "osdk_decoder.h"
@@ -34,167 +34,16 @@
 #define PENDING_LIMIT 1024 /* unanswered commands remembered for ACK matching */
 #define EVENT_BUF (1u << 20)
 
-static const char *const OPERATIONS[] = {
-    "decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
-    "encode_movement_control", "encode_frame",
-};
 
-/* ---- responses ----------------------------------------------------------------------- */
+/* ---- answers ------------------------------------------------------------------------------ */
 
-typedef struct {
-    char *buf;
-    size_t cap;
-    osdk_json_t w;
-} response_t;
-
-static void emit_line(const char *text, size_t n)
-{
-    fwrite(text, 1, n, stdout);
-    fputc('\n', stdout);
-    fflush(stdout);
-}
-
-static void emit_error(const char *cls, const char *detail)
-{
-    char buf[1024];
-    osdk_json_t w;
-    osdk_json_init(&w, buf, sizeof buf);
-    osdk_json_begin_object(&w);
-    osdk_json_key(&w, "ok");
-    osdk_json_bool(&w, false);
-    osdk_json_key(&w, "error");
-    osdk_json_string(&w, cls);
-    osdk_json_key(&w, "detail");
-    osdk_json_string(&w, detail);
-    osdk_json_end_object(&w);
-    if (w.overflow) {
-        static const char fallback[] = "{\"ok\": false, \"error\": \"internal_error\", \"detail\": \"overflow\"}";
-        emit_line(fallback, sizeof fallback - 1);
-        return;
-    }
-    emit_line(buf, w.len);
-}
-
-static void emit_unsupported(void)
-{
-    static const char text[] = "{\"ok\": false, \"unsupported\": true}";
-    emit_line(text, sizeof text - 1);
-}
-
-static void emit_decode_error(const osdk_error_t *err, const char *what)
+/* A decoder error as the answer: its class, and where the generated decoder stopped. */
+static void decode_error(okit_request *req, const osdk_error_t *err, const char *what)
 {
     char detail[256];
     snprintf(detail, sizeof detail, "%s: %s.%s failed at offset %lu", what, err->type ? err->type : "?",
              err->field ? err->field : "?", (unsigned long)err->offset);
-    emit_error(osdk_status_name(err->status), detail);
-}
-
-/* Start {"ok": true, "result": ... ; the caller writes the result object. */
-static bool response_begin(response_t *r, size_t cap)
-{
-    r->cap = cap;
-    r->buf = malloc(cap);
-    if (!r->buf) return false;
-    osdk_json_init(&r->w, r->buf, cap);
-    osdk_json_begin_object(&r->w);
-    osdk_json_key(&r->w, "ok");
-    osdk_json_bool(&r->w, true);
-    osdk_json_key(&r->w, "result");
-    return true;
-}
-
-static void response_end(response_t *r)
-{
-    osdk_json_end_object(&r->w);
-    if (r->w.overflow) emit_error("internal_error", "response too large for the buffer");
-    else emit_line(r->buf, r->w.len);
-    free(r->buf);
-    r->buf = NULL;
-}
-
-/* ---- arguments ------------------------------------------------------------------------- */
-
-typedef struct {
-    char detail[256];
-} bad_t;
-
-static bool bad(bad_t *b, const char *fmt, const char *key)
-{
-    snprintf(b->detail, sizeof b->detail, fmt, key);
-    return false;
-}
-
-static bool arg_int(const jv_t *req, const char *key, int64_t lo, int64_t hi, int64_t *out, bad_t *b)
-{
-    const jv_t *v = jv_get(req, key);
-    if (!v) return bad(b, "missing argument '%s'", key);
-    if (v->kind == JV_BOOL) return bad(b, "argument '%s' must not be a boolean", key);
-    if (v->kind != JV_NUMBER || !v->is_int) return bad(b, "argument '%s' has the wrong type", key);
-    if (v->int_overflow || v->i < lo || v->i > hi) return bad(b, "argument '%s' is out of range", key);
-    *out = v->i;
-    return true;
-}
-
-static bool arg_bool(const jv_t *req, const char *key, bool *out, bad_t *b)
-{
-    const jv_t *v = jv_get(req, key);
-    if (!v) return bad(b, "missing argument '%s'", key);
-    if (v->kind != JV_BOOL) return bad(b, "argument '%s' has the wrong type", key);
-    *out = v->boolean;
-    return true;
-}
-
-static int hexval(char c)
-{
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
-/* A hex string of whole bytes; *out is malloc'ed (at least 1 byte). */
-static bool arg_hex(const jv_t *req, const char *key, uint8_t **out, size_t *len, bad_t *b)
-{
-    const jv_t *v = jv_get(req, key);
-    size_t i, n;
-    uint8_t *buf;
-    if (!v) return bad(b, "missing argument '%s'", key);
-    if (v->kind != JV_STRING) return bad(b, "argument '%s' has the wrong type", key);
-    if (v->len % 2) return bad(b, "argument '%s' is not a hex string of whole bytes", key);
-    n = v->len / 2;
-    buf = malloc(n ? n : 1);
-    if (!buf) return bad(b, "out of memory reading '%s'", key);
-    for (i = 0; i < n; i++) {
-        int hi = hexval(v->str[2 * i]), lo = hexval(v->str[2 * i + 1]);
-        if (hi < 0 || lo < 0) {
-            free(buf);
-            return bad(b, "argument '%s' is not a hex string of whole bytes", key);
-        }
-        buf[i] = (uint8_t)(hi << 4 | lo);
-    }
-    *out = buf;
-    *len = n;
-    return true;
-}
-
-static bool arg_f32(const jv_t *req, const char *key, uint32_t *bits, bad_t *b)
-{
-    const jv_t *v = jv_get(req, key);
-    const jv_t *s;
-    size_t i;
-    uint32_t x = 0;
-    if (!v) return bad(b, "missing argument '%s'", key);
-    if (v->kind != JV_OBJECT) return bad(b, "argument '%s' has the wrong type", key);
-    s = jv_get(v, "f32");
-    if (!s || s->kind != JV_STRING || s->len < 3 || s->len > 10 || s->str[0] != '0' || s->str[1] != 'x')
-        return bad(b, "argument '%s' must be {\"f32\": \"0x........\"}", key);
-    for (i = 2; i < s->len; i++) {
-        int h = hexval(s->str[i]);
-        if (h < 0) return bad(b, "argument '%s' must be {\"f32\": \"0x........\"}", key);
-        x = x << 4 | (uint32_t)h;
-    }
-    *bits = x;
-    return true;
+    okit_error(req, osdk_status_name(err->status), detail);
 }
 
 /* ---- shared pieces ------------------------------------------------------------------------ */
@@ -211,112 +60,103 @@ static void err_detail(char *out, size_t cap, const osdk_error_t *err)
 
 /* ---- decode_payload / decode_frame ---------------------------------------------------------------- */
 
-static void op_decode_payload(const jv_t *req, int profile)
+static void op_decode_payload(okit_request *req)
 {
-    bad_t b;
+    int profile = okit_profile(req);
     uint8_t *data = NULL;
     size_t len = 0;
     int64_t cmd_set, cmd_id;
     bool is_ack;
     osdk_error_t err;
-    response_t r;
-    if (!arg_hex(req, "hex", &data, &len, &b) || !arg_int(req, "cmd_set", 0, 255, &cmd_set, &b) ||
-        !arg_int(req, "cmd_id", 0, 255, &cmd_id, &b) || !arg_bool(req, "is_ack", &is_ack, &b)) {
+    osdk_json_t *w;
+    if (!okit_hex(req, "hex", &data, &len) || !okit_int(req, "cmd_set", 0, 255, &cmd_set) ||
+        !okit_int(req, "cmd_id", 0, 255, &cmd_id) || !okit_bool(req, "is_ack", &is_ack)) {
         free(data);
-        emit_error("bad_request", b.detail);
         return;
     }
     if (osdk_payload_decode(data, len, (uint8_t)cmd_set, (uint8_t)cmd_id, is_ack, osdk_profile_enum_values[profile],
                             &g_payload, &err) != OSDK_OK) {
-        emit_decode_error(&err, "payload");
+        decode_error(req, &err, "payload");
         free(data);
         return;
     }
-    if (!response_begin(&r, (1u << 20) + 8 * len)) {
-        emit_error("internal_error", "out of memory");
+    if (!(w = okit_result(req, (1u << 20) + 8 * len))) {
         free(data);
         return;
     }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "value");
-    osdk_payload_field_to_json(&g_payload, "body", &r.w);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "value");
+    osdk_payload_field_to_json(&g_payload, "body", w);
+    osdk_json_end_object(w);
     free(data);
 }
 
-static void op_decode_frame(const jv_t *req, int profile)
+static void op_decode_frame(okit_request *req)
 {
-    bad_t b;
+    int profile = okit_profile(req);
     uint8_t *data = NULL;
     size_t len = 0;
     char detail[256];
     osdk_status_t st;
     osdk_error_t err;
-    response_t r;
-    if (!arg_hex(req, "hex", &data, &len, &b)) {
-        emit_error("bad_request", b.detail);
+    osdk_json_t *w;
+    if (!okit_hex(req, "hex", &data, &len)) {
         return;
     }
     st = osdk_frame_problem(data, len, detail, sizeof detail);
     if (st != OSDK_OK) {
-        emit_error(osdk_status_name(st), detail);
+        okit_error(req, osdk_status_name(st), detail);
         free(data);
         return;
     }
     if (osdk_frame_decode(data, len, osdk_profile_enum_values[profile], &g_frame, &err) != OSDK_OK) {
-        emit_decode_error(&err, "frame");
+        decode_error(req, &err, "frame");
         free(data);
         return;
     }
-    if (!response_begin(&r, (1u << 20) + 8 * len)) {
-        emit_error("internal_error", "out of memory");
+    if (!(w = okit_result(req, (1u << 20) + 8 * len))) {
         free(data);
         return;
     }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "frame");
-    osdk_frame_to_json(&g_frame, &r.w);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "frame");
+    osdk_frame_to_json(&g_frame, w);
+    osdk_json_end_object(w);
     free(data);
 }
 
 /* ---- control mode ------------------------------------------------------------------------------------- */
 
-static void op_classify(const jv_t *req, int profile)
+static void op_classify(okit_request *req)
 {
-    bad_t b;
+    int profile = okit_profile(req);
     int64_t byte;
     uint8_t one;
     osdk_control_mode_t mode;
     osdk_error_t err;
-    response_t r;
+    osdk_json_t *w;
     int comb;
-    if (!arg_int(req, "byte", 0, 255, &byte, &b)) {
-        emit_error("bad_request", b.detail);
+    if (!okit_int(req, "byte", 0, 255, &byte)) {
         return;
     }
     one = (uint8_t)byte;
     if (osdk_control_mode_decode(&one, 1, &mode, &err) != OSDK_OK) {
-        emit_decode_error(&err, "control mode");
+        decode_error(req, &err, "control mode");
         return;
     }
-    if (!response_begin(&r, 1u << 16)) {
-        emit_error("internal_error", "out of memory");
+    if (!(w = okit_result(req, 1u << 16))) {
         return;
     }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "fields");
-    osdk_control_mode_to_json(&mode, &r.w);
-    osdk_json_key(&r.w, "classification");
-    osdk_json_string(&r.w, osdk_mode_class_names[osdk_mode_class[profile][one]]);
-    osdk_json_key(&r.w, "combination");
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "fields");
+    osdk_control_mode_to_json(&mode, w);
+    osdk_json_key(w, "classification");
+    osdk_json_string(w, osdk_mode_class_names[osdk_mode_class[profile][one]]);
+    osdk_json_key(w, "combination");
     comb = osdk_mode_combination[profile][one];
-    if (comb < 0) osdk_json_null(&r.w);
-    else osdk_json_int(&r.w, comb);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
+    if (comb < 0) osdk_json_null(w);
+    else osdk_json_int(w, comb);
+    osdk_json_end_object(w);
 }
 
 /* Which range each setpoint is checked against (PROTOCOL.md check_movement_control). */
@@ -326,31 +166,30 @@ static const struct {
 } SETPOINTS[4] = {{"x", OSDK_AXIS_HORIZONTAL}, {"y", OSDK_AXIS_HORIZONTAL}, {"z", OSDK_AXIS_VERTICAL},
                   {"yaw", OSDK_AXIS_YAW}};
 
-static void op_check_movement(const jv_t *req, int profile)
+static void op_check_movement(okit_request *req)
 {
-    bad_t b;
+    int profile = okit_profile(req);
     uint8_t *data = NULL;
     size_t len = 0;
     osdk_error_t err;
-    response_t r;
+    osdk_json_t *w;
     const osdk_movement_control_t *mc;
     const osdk_f32_t *values[4];
     uint8_t byte;
     int comb, i;
     char detail[256];
-    if (!arg_hex(req, "hex", &data, &len, &b)) {
-        emit_error("bad_request", b.detail);
+    if (!okit_hex(req, "hex", &data, &len)) {
         return;
     }
     /* as a command value: the movement control command's payload, trailing-bytes check included */
     if (osdk_payload_decode(data, len, 0x01, 0x03, false, osdk_profile_enum_values[profile], &g_payload, &err) !=
         OSDK_OK) {
-        emit_decode_error(&err, "movement control");
+        decode_error(req, &err, "movement control");
         free(data);
         return;
     }
     if (g_payload.body.tag != OSDK_PAYLOAD_BODY_OSDK_MOVEMENT_CONTROL) {
-        emit_error("undecodable", "the payload is not a movement control value");
+        okit_error(req, "undecodable", "the payload is not a movement control value");
         free(data);
         return;
     }
@@ -360,7 +199,7 @@ static void op_check_movement(const jv_t *req, int profile)
     if (osdk_mode_class[profile][byte] != OSDK_MODE_DOCUMENTED) {
         snprintf(detail, sizeof detail, "mode byte 0x%02x is %s on %s", (unsigned)byte,
                  osdk_mode_class_names[osdk_mode_class[profile][byte]], osdk_profile_ids[profile]);
-        emit_error("undefined_mode", detail);
+        okit_error(req, "undefined_mode", detail);
         return;
     }
     comb = osdk_mode_combination[profile][byte];
@@ -376,21 +215,19 @@ static void op_check_movement(const jv_t *req, int profile)
         if (nonfinite || (lim->has_min && v < lim->min) || (lim->has_max && v > lim->max)) {
             snprintf(detail, sizeof detail, "%s (f32 0x%08lx) is outside the %s range", SETPOINTS[i].name,
                      (unsigned long)bits, osdk_axis_names[SETPOINTS[i].axis]);
-            emit_error("out_of_range", detail);
+            okit_error(req, "out_of_range", detail);
             return;
         }
     }
-    if (!response_begin(&r, 1u << 16)) {
-        emit_error("internal_error", "out of memory");
+    if (!(w = okit_result(req, 1u << 16))) {
         return;
     }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "value");
-    osdk_movement_control_to_json(mc, &r.w);
-    osdk_json_key(&r.w, "combination");
-    osdk_json_int(&r.w, comb);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "value");
+    osdk_movement_control_to_json(mc, w);
+    osdk_json_key(w, "combination");
+    osdk_json_int(w, comb);
+    osdk_json_end_object(w);
 }
 
 /* ---- decode_stream ------------------------------------------------------------------------------------ */
@@ -398,6 +235,7 @@ static void op_check_movement(const jv_t *req, int profile)
 typedef struct {
     int profile;
     bool first_event;
+    osdk_json_t *out;   /* the answer's "events" array */
     osdk_ack_table_t acks;
     osdk_pending_t pending[PENDING_LIMIT + 1];
 } stream_ctx_t;
@@ -407,11 +245,11 @@ static void write_event(stream_ctx_t *s, osdk_json_t *w)
     if (w->overflow) {
         static const char fallback[] =
             "{\"kind\": \"error\", \"error\": \"undecodable\", \"detail\": \"event too large\"}";
-        fputs(s->first_event ? "" : ", ", stdout);
-        fputs(fallback, stdout);
+        osdk_json_raw(s->out, s->first_event ? "" : ", ");
+        osdk_json_raw(s->out, fallback);
     } else {
-        fputs(s->first_event ? "" : ", ", stdout);
-        fwrite(w->buf, 1, w->len, stdout);
+        osdk_json_raw(s->out, s->first_event ? "" : ", ");
+        osdk_json_raw_n(s->out, w->buf, w->len);
     }
     s->first_event = false;
 }
@@ -541,54 +379,46 @@ static void on_event(void *user, const osdk_event_t *ev)
 static stream_ctx_t g_stream;
 static uint8_t g_window[OSDK_DEFRAMER_MIN_BUFFER];
 
-static void op_decode_stream(const jv_t *req, int profile)
+static void op_decode_stream(okit_request *req)
 {
-    bad_t b;
+    int profile = okit_profile(req);
     uint8_t *data = NULL;
-    size_t len = 0, pos = 0, i;
-    const jv_t *chunks;
+    uint64_t *chunks = NULL;
+    size_t len = 0, pos = 0, count = 0, i;
     osdk_deframer_t d;
-    if (!arg_hex(req, "hex", &data, &len, &b)) {
-        emit_error("bad_request", b.detail);
-        return;
-    }
-    chunks = jv_get(req, "chunks");
-    if (!chunks) {
+    osdk_json_t *w;
+    if (!okit_hex(req, "hex", &data, &len)) return;
+    if (!okit_sizes(req, "chunks", &chunks, &count)) {
         free(data);
-        emit_error("bad_request", "missing argument 'chunks'");
         return;
     }
-    if (chunks->kind != JV_ARRAY) {
+    /* room for the events: a few hundred bytes per input byte at worst (one rejection each) */
+    if (!(w = okit_result(req, (1u << 20) + 512u * len))) {
         free(data);
-        emit_error("bad_request", "argument 'chunks' has the wrong type");
+        free(chunks);
         return;
-    }
-    for (i = 0; i < chunks->count; i++) {
-        const jv_t *c = &chunks->items[i];
-        if (c->kind != JV_NUMBER || !c->is_int || c->i < 0) {
-            free(data);
-            emit_error("bad_request", "argument 'chunks' must be a list of non-negative integers");
-            return;
-        }
     }
     memset(&g_stream, 0, sizeof g_stream);
     g_stream.profile = profile;
     g_stream.first_event = true;
+    g_stream.out = w;
     osdk_ack_table_init(&g_stream.acks, g_stream.pending, PENDING_LIMIT);
     osdk_deframer_init(&d, g_window, sizeof g_window);
-    fputs("{\"ok\": true, \"result\": {\"events\": [", stdout);
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "events");
+    osdk_json_begin_array(w);
     /* reads of the given sizes; what they leave over arrives as one last read */
-    for (i = 0; i < chunks->count && pos < len; i++) {
-        uint64_t size = (uint64_t)chunks->items[i].i;
-        size_t n = size > (uint64_t)(len - pos) ? len - pos : (size_t)size;
+    for (i = 0; i < count && pos < len; i++) {
+        size_t n = chunks[i] > (uint64_t)(len - pos) ? len - pos : (size_t)chunks[i];
         osdk_deframer_feed(&d, data + pos, n, on_event, &g_stream);
         pos += n;
     }
     if (pos < len) osdk_deframer_feed(&d, data + pos, len - pos, on_event, &g_stream);
     osdk_deframer_finish(&d, on_event, &g_stream);
-    fputs("]}}\n", stdout);
-    fflush(stdout);
+    osdk_json_end_array(w);
+    osdk_json_end_object(w);
     free(data);
+    free(chunks);
 }
 
 /* ---- bench mode (conformance/PROTOCOL.md, "Bench mode") --------------------------------------------------- */
@@ -697,18 +527,14 @@ static int bench_main(int argc, char **argv)
 
 /* ---- encoders ------------------------------------------------------------------------------------------- */
 
-static void hex_result(const uint8_t *bytes, size_t n)
+static void hex_result(okit_request *req, const uint8_t *bytes, size_t n)
 {
-    response_t r;
-    if (!response_begin(&r, (1u << 12) + 2 * n)) {
-        emit_error("internal_error", "out of memory");
-        return;
-    }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "hex");
-    osdk_json_hex(&r.w, bytes, n);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
+    osdk_json_t *w;
+    if (!(w = okit_result(req, (1u << 12) + 2 * n))) return;
+    osdk_json_begin_object(w);
+    osdk_json_key(w, "hex");
+    osdk_json_hex(w, bytes, n);
+    osdk_json_end_object(w);
 }
 
 static void put_le(uint8_t *p, uint64_t v, unsigned n)
@@ -717,53 +543,47 @@ static void put_le(uint8_t *p, uint64_t v, unsigned n)
     for (i = 0; i < n; i++) p[i] = (uint8_t)(v >> (8 * i));
 }
 
-static void op_encode_movement(const jv_t *req)
+static void op_encode_movement(okit_request *req)
 {
     static const char *const keys[4] = {"x", "y", "z", "yaw"};
-    bad_t b;
     int64_t mode;
     uint8_t out[17];
     unsigned i;
-    if (!arg_int(req, "mode", 0, 255, &mode, &b)) {
-        emit_error("bad_request", b.detail);
+    if (!okit_int(req, "mode", 0, 255, &mode)) {
         return;
     }
     out[0] = (uint8_t)mode;
     for (i = 0; i < 4; i++) {
         uint32_t bits;
-        if (!arg_f32(req, keys[i], &bits, &b)) {
-            emit_error("bad_request", b.detail);
-            return;
+        if (!okit_f32(req, keys[i], &bits)) {
+                return;
         }
         put_le(out + 1 + 4 * i, bits, 4);
     }
-    hex_result(out, sizeof out);
+    hex_result(req, out, sizeof out);
 }
 
-static void op_encode_frame(const jv_t *req)
+static void op_encode_frame(okit_request *req)
 {
-    bad_t b;
     bool is_ack;
     int64_t session, seq, cmd_set = 0, cmd_id = 0;
     uint8_t *value = NULL;
     size_t vlen = 0, data_len, frame_len, at;
     uint8_t frame[OSDK_FRAME_MAX_LEN];
     char detail[160];
-    if (!arg_bool(req, "is_ack", &is_ack, &b) || !arg_int(req, "session", 0, 31, &session, &b) ||
-        !arg_int(req, "seq", 0, 0xFFFF, &seq, &b) || !arg_hex(req, "value", &value, &vlen, &b)) {
+    if (!okit_bool(req, "is_ack", &is_ack) || !okit_int(req, "session", 0, 31, &session) ||
+        !okit_int(req, "seq", 0, 0xFFFF, &seq) || !okit_hex(req, "value", &value, &vlen)) {
         free(value);
-        emit_error("bad_request", b.detail);
         return;
     }
     if (is_ack) {
-        if (jv_get(req, "cmd_set") || jv_get(req, "cmd_id")) {
+        if (okit_has(req, "cmd_set") || okit_has(req, "cmd_id")) {
             free(value);
-            emit_error("bad_request", "an ACK frame has no cmd_set or cmd_id");
+            okit_error(req, "bad_request", "an ACK frame has no cmd_set or cmd_id");
             return;
         }
-    } else if (!arg_int(req, "cmd_set", 0, 255, &cmd_set, &b) || !arg_int(req, "cmd_id", 0, 255, &cmd_id, &b)) {
+    } else if (!okit_int(req, "cmd_set", 0, 255, &cmd_set) || !okit_int(req, "cmd_id", 0, 255, &cmd_id)) {
         free(value);
-        emit_error("bad_request", b.detail);
         return;
     }
     data_len = vlen + (is_ack ? 0u : 2u);
@@ -771,12 +591,12 @@ static void op_encode_frame(const jv_t *req)
         snprintf(detail, sizeof detail, "%lu bytes of DATA do not fit a frame of at most %u bytes",
                  (unsigned long)data_len, (unsigned)OSDK_FRAME_MAX_LEN);
         free(value);
-        emit_error("impossible_length", detail);
+        okit_error(req, "impossible_length", detail);
         return;
     }
     if (is_ack && session == 0) {
         free(value);
-        emit_error("bad_session", "an ACK frame cannot be in session 0");
+        okit_error(req, "bad_session", "an ACK frame cannot be in session 0");
         return;
     }
     frame_len = data_len ? OSDK_FRAME_HEADER_LEN + data_len + 4u : OSDK_FRAME_HEADER_LEN;
@@ -799,108 +619,33 @@ static void op_encode_frame(const jv_t *req)
         at += 4;
     }
     free(value);
-    hex_result(frame, at);
+    hex_result(req, frame, at);
 }
 
-/* ---- request loop ---------------------------------------------------------------------------------------- */
-
-static void op_capabilities(void)
-{
-    response_t r;
-    size_t i;
-    if (!response_begin(&r, 1u << 12)) {
-        emit_error("internal_error", "out of memory");
-        return;
-    }
-    osdk_json_begin_object(&r.w);
-    osdk_json_key(&r.w, "name");
-    osdk_json_string(&r.w, TESTEE_NAME);
-    osdk_json_key(&r.w, "operations");
-    osdk_json_begin_array(&r.w);
-    for (i = 0; i < sizeof OPERATIONS / sizeof OPERATIONS[0]; i++) osdk_json_string(&r.w, OPERATIONS[i]);
-    osdk_json_end_array(&r.w);
-    osdk_json_key(&r.w, "profiles");
-    osdk_json_begin_array(&r.w);
-    for (i = 0; i < OSDK_PROFILE_COUNT; i++) osdk_json_string(&r.w, osdk_profile_ids[i]);
-    osdk_json_end_array(&r.w);
-    osdk_json_end_object(&r.w);
-    response_end(&r);
-}
-
-static void answer(const char *line, size_t len)
-{
-    char err[160];
-    jv_t *req = jv_parse(line, len, err, sizeof err);
-    const jv_t *op, *prof;
-    int profile = -1;
-    if (!req) {
-        char detail[200];
-        snprintf(detail, sizeof detail, "not JSON: %s", err);
-        emit_error("bad_request", detail);
-        return;
-    }
-    op = jv_get(req, "op");
-    if (req->kind != JV_OBJECT || !op || op->kind != JV_STRING) {
-        emit_error("bad_request", "a request is a JSON object with an \"op\" string");
-        jv_free(req);
-        return;
-    }
-    prof = jv_get(req, "profile");
-    if (prof && prof->kind == JV_STRING && strlen(prof->str) == prof->len) profile = osdk_profile_index(prof->str);
-    if (strcmp(op->str, "capabilities") == 0) op_capabilities();
-    else if (strcmp(op->str, "encode_movement_control") == 0) op_encode_movement(req);
-    else if (strcmp(op->str, "encode_frame") == 0) op_encode_frame(req);
-    else if (profile < 0) emit_unsupported();
-    else if (strcmp(op->str, "decode_stream") == 0) op_decode_stream(req, profile);
-    else if (strcmp(op->str, "decode_frame") == 0) op_decode_frame(req, profile);
-    else if (strcmp(op->str, "decode_payload") == 0) op_decode_payload(req, profile);
-    else if (strcmp(op->str, "classify_control_mode") == 0) op_classify(req, profile);
-    else if (strcmp(op->str, "check_movement_control") == 0) op_check_movement(req, profile);
-    else emit_unsupported();
-    jv_free(req);
-}
+/* ---- the testee ------------------------------------------------------------------------------------------ */
 
 int main(int argc, char **argv)
 {
-    char *line = NULL;
-    size_t cap = 0, len = 0;
-    int c;
-    if (argc > 1) return bench_main(argc, argv);
+    static const char *profiles[OSDK_PROFILE_COUNT + 1]; /* okit_profile() is then the generated profile index */
+    okit_testee t;
+    int i, status;
+    for (i = 0; i < OSDK_PROFILE_COUNT; i++) profiles[i] = osdk_profile_ids[i];
+    memset(&t, 0, sizeof t);
+    t.name = TESTEE_NAME;
+    t.profiles = profiles;
+    t.decode_stream = op_decode_stream;
+    t.decode_frame = op_decode_frame;
+    t.decode_payload = op_decode_payload;
+    t.classify_control_mode = op_classify;
+    t.check_movement_control = op_check_movement;
+    t.encode_movement_control = op_encode_movement;
+    t.encode_frame = op_encode_frame;
+    t.bench = bench_main;
     g_event_buf = malloc(EVENT_BUF);
     if (!g_event_buf) return 1;
-    for (;;) {
-        /* read one line of any length */
-        len = 0;
-        while ((c = getchar()) != EOF && c != '\n') {
-            if (len + 1 >= cap) {
-                size_t ncap = cap ? cap * 2 : 4096;
-                char *nl = realloc(line, ncap);
-                if (!nl) {
-                    free(line);
-                    free(g_event_buf);
-                    return 1;
-                }
-                line = nl;
-                cap = ncap;
-            }
-            line[len++] = (char)c;
-        }
-        if (len > 0) {
-            size_t k;
-            bool blank = true;
-            for (k = 0; k < len; k++) {
-                if (line[k] != ' ' && line[k] != '\t' && line[k] != '\r') {
-                    blank = false;
-                    break;
-                }
-            }
-            if (!blank) answer(line, len);
-        }
-        if (c == EOF) break;
-    }
-    free(line);
+    status = okit_main(&t, argc, argv);
     free(g_event_buf);
-    return 0;
+    return status;
 }
 
 /* Sanitizer builds: a finding aborts the process (the runner reports a
