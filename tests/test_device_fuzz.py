@@ -163,9 +163,9 @@ def test_a_bad_reproducer_is_refused_before_the_port_is_opened(content, message,
 # ---- sessions against the simulator ----------------------------------------
 
 
-def run_session(sim, tmp: Path, **options):
+def run_session(sim, tmp: Path, key: bytes | None = None, encrypt: bool = False, **options):
     """A session in this process against `sim` over its pty, at 921600 baud."""
-    an = Analyzer(PROFILE)
+    an = Analyzer(PROFILE, key)
     port = Port(sim.url, 921600, an)
     port.open(start=False)
     cap = CaptureWriter(tmp / "fuzz.pcapng")
@@ -180,7 +180,7 @@ def run_session(sim, tmp: Path, **options):
         except RuntimeError as e:
             return str(e)
         return None
-    session = FuzzSession(port, an, opts, Commander(port, an, PROFILE, None, False, ack_timeout=0.3), cap.path,
+    session = FuzzSession(port, an, opts, Commander(port, an, PROFILE, key, encrypt, ack_timeout=0.3), cap.path,
                           restart)
     try:
         out = session.run()
@@ -396,3 +396,27 @@ def test_movement_cases_alone_send_nothing_when_control_is_refused(tmp_path):
                                      "0.3"], capture_output=True, text=True, cwd=tmp_path, timeout=60)
     assert done.returncode == 1 and "NOTHING FUZZED: 0 cases" in done.stdout, done.stdout
     assert "control authority was refused" in done.stderr and "no case kind left to send" in done.stdout
+
+
+KEY = bytes(range(32))
+
+
+@pytest.mark.realtime
+def test_an_encrypted_link_is_fuzzed_with_the_key_and_refused_without_it(tmp_path):
+    with api.simulator(PROFILE, key=KEY, encrypt=True) as sim:
+        _, blind = run_session(sim, tmp_path, max_cases=20)
+        session, out = run_session(sim, tmp_path, key=KEY, encrypt=True, max_cases=60)
+    assert blind.start_problem.startswith("no broadcast frame") and not blind.sent
+    assert out.start_problem == "" and out.findings == [] and sum(out.sent.values()) == 60
+    probes = [op for op in sent_frames(tmp_path / "fuzz.pcapng") if op.encrypted]
+    assert probes, "the probes and the session's commands go out encrypted"
+
+
+@pytest.mark.parametrize("args, env, message", [
+    (["--key-env", "OSDKC_TEST_KEY"], {"OSDKC_TEST_KEY": "zz"}, "the app key must be 64 hex characters"),
+    (["--encrypt"], {}, "--encrypt needs --key-env"),
+])
+def test_a_bad_key_is_a_usage_error(args, env, message, tmp_path):
+    done = subprocess.run(CLI + ["--port", "/nonexistent/tty", "--profile", PROFILE, *args], capture_output=True,
+                          text=True, cwd=tmp_path, timeout=60, env={**os.environ, **env})
+    assert done.returncode == 2 and message in done.stderr and "Traceback" not in done.stderr

@@ -24,6 +24,7 @@ from typing import Callable, Sequence
 from osdk_conformance.core.capture import CaptureWriter
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.core.options import baud_rate, fraction, positive_float, positive_int, uint32
+from osdk_conformance.core.wire import key_option
 from osdk_conformance.device.acceptance import MOTION_WARNING, expect_rates
 from osdk_conformance.device.active import EXIT_BY_SIGNAL, Commander, Interrupts, to_the_end
 from osdk_conformance.device.analysis import Analyzer
@@ -54,6 +55,11 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     d.add_argument("--allow-motion", action="store_true",
                    help="obtain control and send movement control with zero setpoints in a velocity mode")
     d.add_argument("--app-id", type=uint32, help="with --allow-motion: activate this app id before obtaining control")
+    d.add_argument("--key-env", metavar="VAR",
+                   help="environment variable holding the app key (64 hex characters): reads an encrypted broadcast")
+    d.add_argument("--encrypt", action="store_true",
+                   help="AES-256 encrypt the probes and the session's own commands (needs --key-env; cases are sent "
+                        "as generated)")
     d.add_argument("--restart-cmd", metavar="CMD",
                    help="command that restarts the device (power cycle), run between a finding's replays")
     d.add_argument("--recover-timeout", type=positive_float, default=5.0, metavar="S",
@@ -99,7 +105,8 @@ def run_fuzz(args: argparse.Namespace) -> int:
     replay = _read_reproducer(args.replay, profile, args.allow_motion) if args.replay else None
     seed = args.seed if args.seed is not None else random.SystemRandom().randrange(1 << 32)
     seconds = args.seconds if args.seconds is not None else (None if args.cases or replay else 60.0)
-    an = Analyzer(profile, None, expect_rates(profile, args.expect_rate), None)
+    key = key_option(args.key_env, args.encrypt)
+    an = Analyzer(profile, key, expect_rates(profile, args.expect_rate), None)
     sopts = SessionOptions(profile=profile, seed=seed, seconds=seconds, max_cases=args.cases,
                            allow_motion=args.allow_motion, app_id=args.app_id, baud=args.baud,
                            liveness=LivenessOptions(args.ack_timeout, args.stall_timeout,
@@ -128,7 +135,7 @@ def run_fuzz(args: argparse.Namespace) -> int:
                 raise UsageError(f"cannot write the capture {path}: {e.strerror or e}") from None
             print(f"osdkc fuzz: capturing to {cap.path}", file=sys.stderr, flush=True)
         port.critical = interrupts.critical
-        return _session(args, profile, seed, an, port, cap, sopts, findings_dir, interrupts, replay)
+        return _session(args, profile, seed, an, port, cap, sopts, findings_dir, interrupts, replay, key)
     finally:
         interrupts.uninstall()
 
@@ -173,8 +180,8 @@ def _read_reproducer(path: str, profile: str, allow_motion: bool) -> list[FuzzCa
 
 
 def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions, findings_dir: Path,
-             interrupts: Interrupts, replay: list[FuzzCase] | None) -> int:
-    cmd = Commander(port, an, profile, None, False, ack_timeout=sopts.liveness.ack_timeout)
+             interrupts: Interrupts, replay: list[FuzzCase] | None, key: bytes | None) -> int:
+    cmd = Commander(port, an, profile, key, args.encrypt, ack_timeout=sopts.liveness.ack_timeout)
     session = FuzzSession(port, an, sopts, cmd, cap.path if cap else None, _restart_command(args.restart_cmd),
                           interrupts, progress=lambda text: print(f"osdkc fuzz: {text}", file=sys.stderr, flush=True))
     out: SessionOutcome = session.out

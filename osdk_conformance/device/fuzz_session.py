@@ -132,7 +132,7 @@ class FuzzSession:
         self.interrupts = interrupts
         self.progress = progress or (lambda text: None)
         self.send = self.port.write
-        self.live = Liveness(an, self.send, opts.profile, opts.liveness)
+        self.live = Liveness(an, self.send, opts.profile, opts.liveness, cmd.key)
         # the clean-up of the acceptance run, reused: release control and restore the rates
         self.cleanup = ActiveRun(cmd, an, None, opts.app_id, opts.allow_motion, interrupts=interrupts)
         self.out = SessionOutcome()

@@ -73,8 +73,9 @@ class Liveness:
     """The checks of one session over an analyzer (device/analysis.py) fed
     by the port; `send(data, comment)` writes to the device (paced)."""
 
-    def __init__(self, an, send, profile: str, opts: LivenessOptions) -> None:
+    def __init__(self, an, send, profile: str, opts: LivenessOptions, key: bytes | None = None) -> None:
         self.an, self.send, self.profile, self.opts = an, send, profile, opts
+        self.key = key   # the probe goes out AES-256 encrypted with it (--encrypt)
         self.seq = 0
         self.query = osdk_payload(0, 0, False, profile).build({"body": {"arbitrary": 0}})
         self.version: tuple[bytes, int] | None = None   # name and CRC before the first case
@@ -111,7 +112,7 @@ class Liveness:
         with self.an.lock:
             self.an.acks.pop(key, None)    # a case's ACK with this SEQ is not an answer to the probe
         t0 = time.monotonic()
-        self.send(encode(cmd_set=0, cmd_id=0, value=self.query, session=PROBE_SESSION, seq=self.seq),
+        self.send(encode(cmd_set=0, cmd_id=0, value=self.query, session=PROBE_SESSION, seq=self.seq, key=self.key),
                   f"liveness probe after {after}")
         ack = self.an.wait_ack(PROBE_SESSION, self.seq, self.opts.ack_timeout)
         return (ack[3] if ack else None), time.monotonic() - t0
