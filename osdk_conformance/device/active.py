@@ -19,7 +19,7 @@ import signal
 import sys
 import time
 from dataclasses import dataclass
-from typing import Iterator
+from typing import Callable, Iterator
 
 from osdk_conformance.core.commands import ack_code_text
 from osdk_conformance.core.errors import exit_status_of_signal, one_line
@@ -239,6 +239,8 @@ class ActiveRun:
         self.window, self.motion_seconds = window, motion_seconds
         self.interrupts = interrupts
         self.tool = interrupts.tool if interrupts else "osdkc device"
+        # called before the clean-up's commands, when there are any (the fuzzer pads the link there)
+        self.before_cleanup: Callable[[], None] | None = None
         self.results: list[Result] = []
         self.changes = Changes()
         self.phase = "start"
@@ -263,10 +265,12 @@ class ActiveRun:
 
     # ---- the run -------------------------------------------------------------------------
 
-    def run(self) -> list[Result]:
-        """Every check; the clean-up runs however the checks end (an exception propagates after it)."""
+    def run(self, body: Callable[[], None] | None = None) -> list[Result]:
+        """Every check (or `body`: `osdkc fuzz --port` runs its session under
+        this clean-up); the clean-up runs however they end (an exception
+        propagates after it)."""
         try:
-            self.checks()
+            (body or self.checks)()
             if self.interrupts:
                 self.interrupts.mode = "cleanup"   # from here on a signal does not stop the clean-up
         except BaseException:
@@ -448,6 +452,8 @@ class ActiveRun:
                      self.tool)
             if steps:
                 self._await_port()
+                if self.before_cleanup:
+                    self.before_cleanup()
             self.enter("release")
             if self.changes.obtain_sent:
                 self.two_step(0, "active.control_release", 4, 1, 0, tries, timeout)

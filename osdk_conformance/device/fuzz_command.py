@@ -217,7 +217,7 @@ def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions
                    extra_html=checks_html(results) + timeline_html(session.live, out))
     if args.allow_motion:
         print(f"osdkc fuzz: movement control {out.motion}", file=sys.stderr, flush=True)
-    total = sum(out.sent.values())
+    total = sent
     if replay is not None:
         status = 1 if out.findings or out.start_problem or out.stopped or signame or error else 0
         word = ("REPRODUCED" if out.findings else "INTERRUPTED" if signame else "NOT RUN" if not total

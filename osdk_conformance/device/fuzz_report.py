@@ -55,7 +55,7 @@ def results_of(out: SessionOutcome, repro_paths: dict[int, Path]) -> list[Result
     for f in out.findings:
         res.append(finding_result(f, repro_paths.get(f.number)))
     if out.checks:
-        failed = sum(1 for f in out.findings) + sum(f.repeats for f in out.findings)
+        failed = len(out.findings) + sum(f.repeats for f in out.findings)
         res.append(Result("liveness", "fuzz.liveness", PASS if not out.findings else FAIL,
                           f"{out.checks} checks after cases, {failed} failed, {out.retried_checks} needed a second "
                           "probe after padding", {"checks": out.checks, "retried": out.retried_checks}))

@@ -135,6 +135,7 @@ class FuzzSession:
         self.live = Liveness(an, self.send, opts.profile, opts.liveness, cmd.key)
         # the clean-up of the acceptance run, reused: release control and restore the rates
         self.cleanup = ActiveRun(cmd, an, None, opts.app_id, opts.allow_motion, interrupts=interrupts)
+        self.cleanup.before_cleanup = self._pad_before_cleanup
         self.out = SessionOutcome()
         self.recent: list[FuzzCase] = []   # cases sent since the last good check
         self.history: list[FuzzCase] = []  # the last cases sent (for a wider replay)
@@ -168,27 +169,20 @@ class FuzzSession:
         return self._guarded(once)
 
     def _guarded(self, body: Callable[[float], None]) -> SessionOutcome:
+        """`body` under the acceptance run's clean-up (ActiveRun.run)."""
         t0 = time.monotonic()
-        try:
-            body(t0)
-            if self.interrupts:
-                self.interrupts.mode = "cleanup"
-        except BaseException:
-            self.out.seconds = time.monotonic() - t0
-            self.cleanup.stopped_in = self.cleanup.phase
-            self._pad_before_cleanup()
-            self.cleanup.clean_up(interrupted=True)
-            raise
-        self.out.seconds = time.monotonic() - t0
-        self._pad_before_cleanup()
-        self.cleanup.clean_up(interrupted=False)
+
+        def timed() -> None:
+            try:
+                body(t0)
+            finally:
+                self.out.seconds = time.monotonic() - t0
+        self.cleanup.run(timed)
         return self.out
 
     def _pad_before_cleanup(self) -> None:
         """A case cut short by a signal may leave the device waiting for the
         rest of a frame: finish it, or it swallows the release command."""
-        if not (self.cleanup.changes.obtain_sent or self.cleanup.changes.frequency_sent):
-            return
         try:
             self.live.pad("padding before the clean-up")
         except (PortDown, OSError):
@@ -211,7 +205,6 @@ class FuzzSession:
                                                self.out.withheld)
         n, bytes_before = 0, self.port.bytes
         for case in source:
-            self.out.bytes_sent = self.port.bytes - bytes_before
             if self.opts.max_cases is not None and n >= self.opts.max_cases:
                 break
             if self.opts.seconds is not None and time.monotonic() - t0 >= self.opts.seconds:

@@ -127,14 +127,15 @@ class Liveness:
     def baseline(self) -> str | None:
         """Before the first case: the broadcast arrives and the version query is
         answered. None when it is so, else what is wrong."""
-        end = time.monotonic() + max(self.opts.stall_timeout * 3, 2.0)
+        first_frame_s = max(self.opts.stall_timeout * 3, 2.0)
+        end = time.monotonic() + first_frame_s
         while time.monotonic() < end:
             with self.an.lock:
                 if self.an.bcast:
                     break
             time.sleep(0.05)
         else:
-            return f"no broadcast frame within {max(self.opts.stall_timeout * 3, 2.0):g} s"
+            return f"no broadcast frame within {first_frame_s:g} s"
         self.pad("padding before the first probe", MAX_LEN + 1)
         value, _ = self.ask("start")
         if value is None:
