@@ -9,13 +9,13 @@ ACCEL_OK  := $(VENV)/.accel-built
 ACCEL_SRC := osdk_conformance/reference/_accel.c $(wildcard generated/c/*.[ch] generated/cpython/*.[ch])
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup system-packages testees kit test quick regen check-generated vectors bench fuzz clean
+.PHONY: setup system-packages testees examples kit test quick regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
 LANGS  := javascript java go c
 
-setup: system-packages $(PY_OK) $(ACCEL_OK) $(JS_OK) testees
+setup: system-packages $(PY_OK) $(ACCEL_OK) $(JS_OK) testees examples
 
 # clang + sanitizer/libFuzzer runtimes, and tshark, from Debian, pinned (tools/apt-packages.sh).
 system-packages:
@@ -24,6 +24,13 @@ system-packages:
 testees: $(PY_OK) $(JS_OK)
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang build || exit 1; done
 	@$(MAKE) --no-print-directory -C conformance/baseline build
+
+# The generated libraries' examples (examples/<language>/), each built the
+# way a user of that language builds against the packaged library; the tests
+# run them (generated/README.md).
+EXAMPLES := python $(LANGS)
+examples: $(PY_OK) testees
+	@for lang in $(EXAMPLES); do $(MAKE) --no-print-directory -C examples/$$lang build || exit 1; done
 
 $(PY_OK): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
@@ -98,4 +105,5 @@ fuzz: setup
 clean:
 	rm -rf $(VENV) tools/ksc/node_modules .pytest_cache .hypothesis .cache
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang clean; done
+	@for lang in $(EXAMPLES); do $(MAKE) --no-print-directory -C examples/$$lang clean; done
 	@$(MAKE) --no-print-directory -C conformance/baseline clean

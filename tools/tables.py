@@ -17,7 +17,12 @@ the C generator). Everything here is derived, none of it is typed by hand
   ranges (ERRATA E15, E16);
 - model: per ksy type (key "file" or "file.type.subtype"), its class path
   and its seq fields in wire order with what the value model needs to
-  render each (docs/VALUE-MODEL.md); enums by "file.enum".
+  render each (docs/VALUE-MODEL.md); enums by "file.enum";
+- library: what the generated libraries' receive-and-send glue
+  (tools/libgen) is made from: the frame header's fields with their bit
+  positions, the receiver's header checks in order, each profile's
+  broadcast items by flag bit, and the wire layout of every command an
+  onboard computer sends.
 
 regen.py also writes, beside the Go parsers, the list of their struct types
 (go_types(): Go cannot find a type by its name at run time).
@@ -163,6 +168,87 @@ def crc_tables(r: rules.Rules) -> dict[str, Any]:
     return out
 
 
+def _header_fields() -> list[dict[str, Any]]:
+    """The fixed header of osdk_frame.ksy as bit positions from the frame's
+    first bit (bit-endian le: a bit field starts at the lowest free bit)."""
+    index = ksy.load()
+    out, bit = [], 0
+    for f in index.raw_seq(index.types[("osdk_frame", ())]):
+        t = f.get("type")
+        if "contents" in f:
+            width = 8 * len(f["contents"])
+        elif isinstance(t, str) and (m := _BITS.match(t)):
+            width = int(m.group(1))
+        elif isinstance(t, str) and (m := _PRIM.match(t)):
+            width = 8 * int(m.group(2))
+        else:
+            break  # DATA: the header ends here
+        out.append({"id": f["id"], "byte": bit // 8, "lsb": bit % 8, "width": width})
+        bit += width
+    return out
+
+
+# A command value field as the encoders write it: "u1"/"u2"/"u4" (unsigned,
+# little-endian), "f4" (float32 bits), "bytes" with a size; "count" repeats.
+def _wire_field(file_id: str, f: dict, index: Any) -> dict[str, Any]:
+    out: dict[str, Any] = {"id": f["id"]}
+    t = f.get("type")
+    if t is None and "size" in f:
+        out.update(wire="bytes", size=int(f["size"]))
+    elif isinstance(t, str) and (m := _PRIM.match(t)) and m.group(1) == "u":
+        out["wire"] = f"u{m.group(2)}"
+    elif isinstance(t, str) and (m := _FLOAT.match(t)) and m.group(1) == "4":
+        out["wire"] = "f4"
+    elif isinstance(t, str) and (file_id, ()) != (t, ()) and (t, ()) in index.types:
+        # a type of its own file that is one byte of bit fields (the control mode byte)
+        bits = sum(int(_BITS.match(g["type"]).group(1)) for g in index.raw_seq(index.types[(t, ())]))
+        if bits != 8:
+            raise SystemExit(f"tables: {file_id}.{f['id']}: type {t} is {bits} bits, not one byte")
+        out.update(wire="u1", type=t)
+    else:
+        raise SystemExit(f"tables: {file_id}.{f['id']}: no encoder for type {t!r}")
+    if "enum" in f:
+        out["enum"] = _enum_key(file_id, f["enum"])
+    if f.get("repeat") == "expr":
+        out["count"] = int(f["repeat-expr"])
+    return out
+
+
+def _sent_commands() -> list[dict[str, Any]]:
+    """Every command the spec names in the sets an onboard computer sends
+    (command set 0x02 is what the flight controller pushes: PROTOCOL-FACTS
+    section 2), with its value's layout from the osdk_payload.ksy switch."""
+    index = ksy.load()
+    cases = index.raw_seq(index.types[("osdk_payload", ())])[0]["type"]["cases"]
+    out = []
+    for (cmd_set, cmd_id), name in sorted(COMMANDS.items()):
+        if cmd_set == 0x02:
+            continue
+        ref = cases[cmd_set * 0x100 + cmd_id]
+        file_id, path = (ref, ()) if (ref, ()) in index.types else ("osdk_payload", (ref,))
+        fields = [_wire_field(file_id, f, index) for f in index.raw_seq(index.types[(file_id, path)])]
+        size = sum((f.get("size") or int(f["wire"][1:])) * f.get("count", 1) for f in fields)
+        out.append({"name": name, "cmd_set": cmd_set, "cmd_id": cmd_id, "type": _type_key(file_id, path),
+                    "size": size, "fields": fields})
+    return out
+
+
+def library_tables(r: rules.Rules) -> dict[str, Any]:
+    frame = r.data["frame"]
+    return {
+        "frame": {
+            "sof": frame["sof"], "header_len": frame["header_len"], "crc32_len": frame["crc32_len"],
+            "max_len": frame["max_len"], "header_only_len": frame["header_only"]["len"],
+            "impossible_lengths": [[0, frame["impossible_lengths"]["below"] - 1]]
+            + [[x["min"], x["max"]] for x in frame["impossible_lengths"]["ranges"]],
+            "header_checks": list(frame["receiver"]["header_checks"]),
+            "header_fields": _header_fields(),
+        },
+        "broadcast_items": {p: list(r.profile(p).flag_bits) for p in r.profile_names},
+        "sent_commands": _sent_commands(),
+    }
+
+
 def tables() -> dict[str, Any]:
     r = rules.default_rules()
     return {
@@ -176,6 +262,7 @@ def tables() -> dict[str, Any]:
         "model": model_tables(),
         "if_expressions": if_expressions(),
         "checked_fields": checked_fields(),
+        "library": library_tables(r),
     }
 
 

@@ -6,32 +6,19 @@ protocol of conformance/PROTOCOL.md.
     python conformance/testees/kaitai_python_testee.py --bench FILE --profile P   # osdk_conformance.harness.testee_bench
 
 Every layout, field, enum and `valid` check comes from the generated
-parsers. The glue below does only what a .ksy cannot:
+parsers, and the receiving and sending from the library generated around
+them (generated/python, the package osdk_kaitai): its Deframer finds the
+frames in decode_stream, its decode_frame / decode_payload apply the rule
+order of conformance/PROTOCOL.md and raise OsdkError with the error class,
+and its encoders answer encode_movement_control (float arguments as
+Float32Bits, bit for bit) and encode_frame. What is left here is what the
+testee protocol asks beyond the library:
 
-- CRC-16/CRC-32 checks: osdk_conformance.core.crc (parameters from rules.yaml).
-- Finding frames in a byte stream (hunting for 0xAA, the receiver's header
-  check, rescanning after a rejection): the testee REUSES
-  osdk_conformance.core.deframe (the Deframer for decode_stream, and its
-  header_problem for decode_frame). That is frame-layer receiver logic, not
-  part of the .ksy, and shared on purpose so that both bundled
-  implementations meet the same receiver; no Construct code is involved.
-  decode_frame's pre-parse checks follow the order of the receiver
-  (start byte, 12 header bytes, header check, byte count against LEN,
-  CRC-32), as conformance/PROTOCOL.md's reference does.
 - ACK matching in streams (an ACK's value is typed by the command with the
   same session and SEQ seen earlier) and chunking of the input.
 - Control mode classification and input ranges: osdk_conformance.core.rules
   (rules.yaml), applied to what OsdkControlMode / OsdkMovementControl read.
 - The JSON value model: osdk_conformance.core.model.from_kaitai.
-- Error classes: a Kaitai `valid` failure (ValidationNotEqualError,
-  ValidationExprError) names its field by `src_path` ("/seq/N") in the type
-  whose `_read` raised it, found from the traceback; the field maps to the
-  class of docs/VALUE-MODEL.md (`len` impossible_length, `ver` bad_version,
-  `res0`/`res1`/`reserved_flags` reserved_bits, `enc` bad_encryption,
-  `is_ack` bad_session, `trailing` length_mismatch). Running out of bytes
-  (EndOfStreamError, an EOFError) inside a value is truncated_payload.
-- Encoding operations are unsupported: the Kaitai Python runtime cannot
-  serialise.
 
 Signalling NaNs. The Kaitai Python runtime reads f4/f8 through
 `struct.unpack` into a Python float (a C double), and the conversion sets
@@ -60,30 +47,30 @@ import json
 import math
 import re
 import sys
-import traceback
 from io import BytesIO
 from typing import Any, Iterable, Iterator, Sequence
 
-from kaitaistruct import EndOfStreamError, KaitaiStream, KaitaiStruct, KaitaiStructError, ValidationFailedError
+from kaitaistruct import KaitaiStream, KaitaiStruct
 
+import osdk_kaitai
 from osdk_conformance.core import ksy, model
 from osdk_conformance.core.commands import command_name
-from osdk_conformance.core.crc import crc32
-from osdk_conformance.core.deframe import (HEADER_LEN, Frame, Garbage, Rejected, deframe, frame_length,
-                                      header_problem, split_chunks)
 from osdk_conformance.core.rules import classify_control_mode, input_ranges, profile_names
 from osdk_conformance.harness.serve import serve
+from osdk_kaitai import Float32Bits, OsdkError, OsdkFrame
 from osdk_kaitai.osdk_control_mode import OsdkControlMode
-from osdk_kaitai.osdk_frame import OsdkFrame
-from osdk_kaitai.osdk_payload import OsdkPayload
 
 NAME = "osdk-kaitai-python"
 PROFILES = profile_names()
-OPERATIONS = ("decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control")
+OPERATIONS = ("decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
+              "encode_movement_control", "encode_frame")
+NO_PROFILE = ("encode_movement_control", "encode_frame")  # their requests carry none
 
 AXIS_RANGE = {"x": "horizontal", "y": "horizontal", "z": "vertical", "yaw": "yaw"}
 PENDING_LIMIT = 1024  # unanswered commands remembered for ACK matching
+MOVEMENT_CONTROL = osdk_kaitai.COMMANDS["movement_control"]
 _HEX = re.compile(r"(?:[0-9a-fA-F]{2})*")
+_F32 = re.compile(r"0x[0-9a-f]{8}")
 KSY = ksy.load()
 
 
@@ -91,60 +78,8 @@ class BadRequest(ValueError):
     pass
 
 
-class Rejection(Exception):
-    """The input was rejected with an error class."""
-
-    def __init__(self, cls: str, detail: str) -> None:
-        super().__init__(detail)
-        self.cls, self.detail = cls, detail
-
-
-def _profile(name: str) -> OsdkPayload.Profile:
-    return OsdkPayload.Profile[name.replace("-", "_").replace(".", "_")]
-
-
-def _stream(data: bytes) -> KaitaiStream:
-    return KaitaiStream(BytesIO(data))
-
-
-# ---- Kaitai exceptions -> error classes ------------------------------------------
-
-def _raising_field(exc: ValidationFailedError) -> str | None:
-    """The ksy field id whose `valid` check raised `exc`."""
-    m = re.search(r"/seq/(\d+)$", exc.src_path or "")
-    if not m:
-        return None
-    obj = None
-    for frame, _ in traceback.walk_tb(exc.__traceback__):
-        candidate = frame.f_locals.get("self")
-        if isinstance(candidate, KaitaiStruct):
-            obj = candidate  # the innermost KaitaiStruct whose code ran
-    if obj is None:
-        return None
-    fields = list(KSY.type_for_class(type(obj)).fields)
-    n = int(m.group(1))
-    return fields[n] if n < len(fields) else None
-
-
-def rejection(exc: Exception) -> Rejection:
-    if isinstance(exc, ValidationFailedError):
-        name = _raising_field(exc)
-        return Rejection(model.ERROR_BY_FIELD.get(name, "undecodable"), f"{name or exc.src_path}: {_one_line(exc)}")
-    if isinstance(exc, (EndOfStreamError, EOFError)):
-        return Rejection("truncated_payload", _one_line(exc))
-    return Rejection("undecodable", f"{type(exc).__name__}: {_one_line(exc)}")
-
-
 def _one_line(exc: BaseException) -> str:
     return re.sub(r"\s+", " ", str(exc)).strip()
-
-
-def parse(make, data: bytes):
-    """make(stream) with Kaitai errors turned into a Rejection."""
-    try:
-        return make(_stream(data))
-    except (KaitaiStructError, EOFError) as e:
-        raise rejection(e) from None
 
 
 # ---- signalling NaNs: the wire's bits back into the model ----------------------------
@@ -222,11 +157,12 @@ def frame_model(frame: OsdkFrame, raw: bytes) -> dict:
     return m
 
 
-def payload_body_model(payload: OsdkPayload, raw: bytes) -> Any:
-    m = model.from_kaitai(payload)
+def body_model(body: KaitaiStruct, raw: bytes) -> Any:
+    """The model of a payload's body (which starts the payload's bytes)."""
+    m = model.from_kaitai(body)
     if "NaN" in json.dumps(m):
-        restore_nan_bits(payload, m, raw)
-    return m["body"]
+        restore_nan_bits(body, m, raw)
+    return m
 
 
 # ---- arguments ------------------------------------------------------------------------
@@ -242,18 +178,29 @@ def _arg(req: dict, key: str, kind) -> Any:
     return v
 
 
-def _hex(req: dict) -> bytes:
-    text = _arg(req, "hex", str)
+def _hex(req: dict, key: str = "hex") -> bytes:
+    text = _arg(req, key, str)
     if not _HEX.fullmatch(text):
-        raise BadRequest("argument 'hex' is not a hex string of whole bytes")
+        raise BadRequest(f"argument {key!r} is not a hex string of whole bytes")
     return bytes.fromhex(text)
 
 
-def _byte_arg(req: dict, key: str) -> int:
+def _int_arg(req: dict, key: str, top: int) -> int:
     v = _arg(req, key, int)
-    if not 0 <= v <= 0xFF:
-        raise BadRequest(f"argument {key!r} must be 0..255")
+    if not 0 <= v <= top:
+        raise BadRequest(f"argument {key!r} must be 0..{top}")
     return v
+
+
+def _byte_arg(req: dict, key: str) -> int:
+    return _int_arg(req, key, 0xFF)
+
+
+def _f32_arg(req: dict, key: str) -> Float32Bits:
+    bits = _arg(req, key, dict).get("f32")
+    if not isinstance(bits, str) or not _F32.fullmatch(bits):
+        raise BadRequest(f'argument {key!r} must be {{"f32": "0x" and 8 hex digits}}')
+    return Float32Bits(int(bits, 16))
 
 
 # ---- operations -------------------------------------------------------------------------
@@ -262,111 +209,113 @@ def decode_payload(req: dict, profile: str) -> dict:
     data = _hex(req)
     cmd_set, cmd_id = _byte_arg(req, "cmd_set"), _byte_arg(req, "cmd_id")
     is_ack = _arg(req, "is_ack", bool)
-    p = parse(lambda io: OsdkPayload(cmd_set, cmd_id, is_ack, _profile(profile), io), data)
-    return {"value": payload_body_model(p, data)}
+    return {"value": body_model(osdk_kaitai.decode_payload(data, cmd_set, cmd_id, is_ack, profile), data)}
 
 
 def classify(req: dict, profile: str) -> dict:
-    byte = _arg(req, "byte", int)
-    if not 0 <= byte <= 0xFF:
-        raise BadRequest("argument 'byte' must be 0..255")
-    fields = model.from_kaitai(parse(OsdkControlMode, bytes([byte])))
+    byte = _byte_arg(req, "byte")
+    fields = model.from_kaitai(OsdkControlMode(KaitaiStream(BytesIO(bytes([byte])))))
     c = classify_control_mode(byte, profile)
     return {"fields": fields, "classification": c["classification"], "combination": c["combination"]}
 
 
 def check_movement_control(req: dict, profile: str) -> dict:
     data = _hex(req)
-    # As a command value: OsdkPayload(0x01, 0x03) is osdk_movement_control plus the trailing-bytes check.
-    p = parse(lambda io: OsdkPayload(0x01, 0x03, False, _profile(profile), io), data)
-    body = p.body
-    value = payload_body_model(p, data)
+    # as a command value: osdk_movement_control plus the trailing-bytes check
+    body = osdk_kaitai.decode_payload(data, *MOVEMENT_CONTROL, False, profile)
+    value = body_model(body, data)
     byte = data[0]
     c = classify_control_mode(byte, profile)
     if c["classification"] != "documented":
-        raise Rejection("undefined_mode", f"mode byte 0x{byte:02x} is {c['classification']} on {profile}")
+        raise OsdkError("undefined_mode", "control_mode",
+                        f"mode byte 0x{byte:02x} is {c['classification']} on {profile}")
     ranges = input_ranges(byte, profile)
     for axis, which in AXIS_RANGE.items():
         v = getattr(body, axis)  # a double; a quieted NaN is still a NaN
         lim = ranges[which]
         lo, hi = lim.get("min"), lim.get("max")
         if math.isnan(v) or math.isinf(v) or (lo is not None and v < lo) or (hi is not None and v > hi):
-            raise Rejection("out_of_range", f"{axis} = {v!r} outside the {which} range {lo}..{hi}")
+            raise OsdkError("out_of_range", axis, f"{axis} = {v!r} outside the {which} range {lo}..{hi}")
     return {"value": value, "combination": c["combination"]}
-
-
-def _frame(raw: bytes, profile: str) -> OsdkFrame:
-    return parse(lambda io: OsdkFrame(_profile(profile), io), raw)
 
 
 def decode_frame(req: dict, profile: str) -> dict:
     data = _hex(req)
-    # The receiver's checks, in the order a receiver meets them.
-    if not data:
-        raise Rejection("truncated_frame", "no bytes")
-    if data[0] != 0xAA:
-        raise Rejection("bad_sof", f"first byte 0x{data[0]:02x} is not the start byte")
-    if len(data) < HEADER_LEN:
-        raise Rejection("truncated_frame", f"{len(data)} bytes, less than a header")
-    problem = header_problem(data[:HEADER_LEN])
-    if problem:
-        raise Rejection(*problem)
-    length = frame_length(data)
-    if len(data) < length:
-        raise Rejection("truncated_frame", f"{len(data)} bytes of a frame of LEN {length}")
-    if len(data) > length:
-        raise Rejection("length_mismatch", f"{len(data)} bytes for LEN {length}")
-    if length > HEADER_LEN and crc32(data) != 0:
-        raise Rejection("bad_crc32", "CRC-32 does not match")
-    return {"frame": frame_model(_frame(data, profile), data)}
+    return {"frame": frame_model(osdk_kaitai.decode_frame(data, profile), data)}
+
+
+def encode_movement_control(req: dict, profile: None) -> dict:
+    mode = _byte_arg(req, "mode")
+    x, y, z, yaw = (_f32_arg(req, k) for k in ("x", "y", "z", "yaw"))
+    return {"hex": osdk_kaitai.encode_movement_control(mode, x, y, z, yaw).hex()}
+
+
+def encode_frame(req: dict, profile: None) -> dict:
+    is_ack = _arg(req, "is_ack", bool)
+    cmd_set = None if is_ack else _byte_arg(req, "cmd_set")
+    cmd_id = None if is_ack else _byte_arg(req, "cmd_id")
+    session, seq = _int_arg(req, "session", 31), _int_arg(req, "seq", 0xFFFF)
+    value = _hex(req, "value")
+    return {"hex": osdk_kaitai.encode_frame(cmd_set, cmd_id, is_ack, session, seq, value).hex()}
 
 
 class StreamDecoder:
-    """Events of a stream: Deframer boundaries, Kaitai values, ACK matching.
-    models=False leaves each value as Kaitai parsed it (the bench mode times
-    decoding, not the value model)."""
+    """Events of a stream: the library's Deframer events and decode_frame,
+    then ACK matching. models=False leaves each value as Kaitai parsed it
+    (the bench mode times decoding, not the value model)."""
 
     def __init__(self, profile: str, models: bool = True) -> None:
         self.profile = profile
         self.models = models
         self.pending: dict[tuple[int, int], tuple[int, int]] = {}
 
-    def event(self, ev) -> dict:
-        if isinstance(ev, Garbage):
+    def event(self, ev: osdk_kaitai.Event) -> dict:
+        if ev.kind == "garbage":
             return {"offset": ev.offset, "kind": "garbage", "length": ev.length}
-        if isinstance(ev, Rejected):
-            return {"offset": ev.offset, "kind": "error", "error": ev.error, "detail": ev.detail, "length": ev.length}
-        assert isinstance(ev, Frame)
+        if ev.kind == "error":
+            return {"offset": ev.offset, "kind": "error", "error": ev.error_class, "detail": ev.detail,
+                    "length": ev.length}
         try:
             return self._frame(ev)
-        except Rejection as r:
-            return {"offset": ev.offset, "kind": "error", "error": r.cls, "detail": r.detail, "length": len(ev.raw)}
+        except OsdkError as e:
+            return {"offset": ev.offset, "kind": "error", "error": e.error_class, "detail": e.detail,
+                    "length": ev.length}
         except Exception as e:  # our bug must not cost the rest of the stream
             return {"offset": ev.offset, "kind": "error", "error": "undecodable",
-                    "detail": f"internal error ({type(e).__name__}: {_one_line(e)})", "length": len(ev.raw)}
+                    "detail": f"internal error ({type(e).__name__}: {_one_line(e)})", "length": ev.length}
 
-    def _frame(self, ev: Frame) -> dict:
-        f = _frame(ev.raw, self.profile)
+    def _frame(self, ev: osdk_kaitai.Event) -> dict:
+        f = osdk_kaitai.decode_frame(ev.raw, self.profile)
         out: dict[str, Any] = {"offset": ev.offset, "kind": "frame"}
-        if f.len > HEADER_LEN and isinstance(f.data, OsdkFrame.FrameData):
+        if not f.header_only and isinstance(f.data, OsdkFrame.FrameData):
             if f.is_ack:
                 key = (f.session, f.seq)
                 if key in self.pending:
                     cmd_set, cmd_id = self.pending.pop(key)
                     out["ack_of"] = command_name(cmd_set, cmd_id)
+                    raw = f.data.ack_value
                     try:
-                        ack = parse(lambda io: OsdkPayload(cmd_set, cmd_id, True, _profile(self.profile), io),
-                                    f.data.ack_value)
-                    except Rejection as r:
-                        return {"offset": ev.offset, "kind": "error", "error": r.cls, "detail": r.detail,
-                                "length": len(ev.raw), "ack_of": out["ack_of"]}
-                    out["ack"] = payload_body_model(ack, f.data.ack_value) if self.models else ack.body
+                        ack = osdk_kaitai.decode_payload(raw, cmd_set, cmd_id, True, self.profile)
+                    except OsdkError as e:
+                        return {"offset": ev.offset, "kind": "error", "error": e.error_class, "detail": e.detail,
+                                "length": ev.length, "ack_of": out["ack_of"]}
+                    out["ack"] = body_model(ack, raw) if self.models else ack
             elif f.session > 0:
-                self.pending[(f.session, f.seq)] = (int(f.data.cmd_set), f.data.cmd_id)
+                self.pending[(f.session, f.seq)] = (f.data.cmd_set_code, f.data.cmd_id)
                 if len(self.pending) > PENDING_LIMIT:
                     self.pending.pop(next(iter(self.pending)))
         out["frame"] = frame_model(f, ev.raw) if self.models else f
         return out
+
+
+def split_chunks(data: bytes, sizes: list[int]) -> Iterator[bytes]:
+    """`data` cut into reads of the given sizes; what they leave over is one last read."""
+    pos = 0
+    for size in sizes:
+        yield data[pos:pos + size]
+        pos += size
+    if pos < len(data):
+        yield data[pos:]
 
 
 def decode_stream(req: dict, profile: str) -> dict:
@@ -380,7 +329,11 @@ def decode_stream(req: dict, profile: str) -> dict:
 def stream_events(chunks: Iterable[bytes], profile: str, models: bool = True) -> Iterator[dict]:
     """decode_stream's events, one read after another (also the bench mode's loop)."""
     dec = StreamDecoder(profile, models)
-    for ev in deframe(chunks):
+    deframer = osdk_kaitai.Deframer()
+    for chunk in chunks:
+        for ev in deframer.feed(chunk):
+            yield dec.event(ev)
+    for ev in deframer.finish():
         yield dec.event(ev)
 
 
@@ -390,6 +343,8 @@ OPS = {
     "decode_payload": decode_payload,
     "classify_control_mode": classify,
     "check_movement_control": check_movement_control,
+    "encode_movement_control": encode_movement_control,
+    "encode_frame": encode_frame,
 }
 
 
@@ -401,12 +356,12 @@ def answer(req: Any) -> dict:
         return {"ok": True, "result": {"name": NAME, "operations": list(OPERATIONS), "profiles": list(PROFILES)}}
     fn = OPS.get(op)
     profile = req.get("profile")
-    if fn is None or profile not in PROFILES:
+    if fn is None or (op not in NO_PROFILE and profile not in PROFILES):
         return {"ok": False, "unsupported": True}
     try:
         return {"ok": True, "result": fn(req, profile)}
-    except Rejection as r:
-        return {"ok": False, "error": r.cls, "detail": r.detail}
+    except OsdkError as e:
+        return {"ok": False, "error": e.error_class, "detail": e.detail}
 
 
 def main(argv: Sequence[str] = ()) -> int:

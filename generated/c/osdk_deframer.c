@@ -3,7 +3,6 @@
 #include "osdk_deframer.h"
 
 #include <stdarg.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "osdk_crc.h"
@@ -11,12 +10,43 @@
 #define HEADER_LEN OSDK_FRAME_HEADER_LEN
 #define CRC32_LEN 4u
 
+/* The details' own printf subset (%u, %lu, %0Nx, %0Nlx), so that the
+ * receiver needs no <stdio.h> on a board without one; truncates like
+ * snprintf and always terminates. */
 static void osdk_detail(char *buf, size_t cap, const char *fmt, ...)
 {
     va_list ap;
+    size_t n = 0;
     if (buf == NULL || cap == 0) return;
     va_start(ap, fmt);
-    vsnprintf(buf, cap, fmt, ap);
+    while (*fmt) {
+        char digits[24];
+        unsigned width = 0, base, k = 0;
+        unsigned long v;
+        if (*fmt != '%') {
+            if (n + 1 < cap) buf[n++] = *fmt;
+            fmt++;
+            continue;
+        }
+        fmt++;
+        if (*fmt == '0') fmt++;
+        while (*fmt >= '0' && *fmt <= '9') width = width * 10u + (unsigned)(*fmt++ - '0');
+        if (*fmt == 'l') {
+            fmt++;
+            v = va_arg(ap, unsigned long);
+        } else {
+            v = va_arg(ap, unsigned);
+        }
+        base = *fmt == 'x' ? 16u : 10u;
+        if (*fmt) fmt++;
+        do {
+            digits[k++] = "0123456789abcdef"[v % base];
+            v /= base;
+        } while (v && k < sizeof digits);
+        while (k < width && k < sizeof digits) digits[k++] = '0';
+        while (k && n + 1 < cap) buf[n++] = digits[--k];
+    }
+    buf[n] = '\0';
     va_end(ap);
 }
 

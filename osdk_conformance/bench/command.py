@@ -15,6 +15,11 @@ Sections (`--only`, default all, in this order):
 - device_fuzz: cases per second of `osdkc fuzz --port` against a healthy
   `osdkc sim` over a pty at 921600 and 230400 baud (fixed cases and seed),
   beside what the line could carry of the bytes a case takes.
+- footprint: text, data and bss of the C library (generated/c) per
+  feature and the deepest stack of each public function, on x86-64 (gcc)
+  and Cortex-M4 (clang-14), compile only (footprint.py); with --markdown
+  it rewrites its own block of the file, so `--only footprint` leaves the
+  other numbers alone.
 - reliability (only when named in --only: it takes about an hour):
   healthy active runs of `osdkc device` that must all pass, and seeded runs
   of every simulator fault that must all be detected (reliability.py).
@@ -35,7 +40,7 @@ import sys
 import time
 from pathlib import Path
 
-from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, reliability as bench_reliability, report as bench_report, sections as bench_sections
+from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, report as bench_report, sections as bench_sections
 from osdk_conformance.bench.corpus import CORPORA
 from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
@@ -43,8 +48,8 @@ from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int, probability
 
-SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "reliability")
-DEFAULT_SECTIONS = SECTIONS[:6]
+SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability")
+DEFAULT_SECTIONS = SECTIONS[:7]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
     "fuzz_examples": (2000, 200),
@@ -196,15 +201,23 @@ def run_bench(args: argparse.Namespace) -> int:
         result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.load_share, args.parallel,
                                                           kinds)
         result["reliability"]["command"] = command_line(args)
+    if "footprint" in sections:
+        _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only")
+        result["footprint"] = bench_footprint.measure()
     result["total_seconds"] = round(time.monotonic() - t0, 1)
     result["machine"]["load_average_at_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
     result["targets"] = bench_report.targets(result)
     result["ok"] = _ok(result)
 
-    print(json.dumps(result, indent=1) if args.json else bench_report.terminal(result))
+    text = bench_report.terminal(result)
+    if "footprint" in result:
+        text += "\n\n" + bench_footprint.terminal(result["footprint"])
+    print(json.dumps(result, indent=1) if args.json else text)
     try:
-        if md_path:
+        if md_path and sections != ["footprint"]:
             bench_report.write_markdown(md_path, bench_report.markdown(result))
+        if md_path and "footprint" in result:
+            bench_footprint.write_markdown(md_path, bench_footprint.markdown(result["footprint"], result["command"]))
     except OSError as e:
         raise UsageError(f"cannot write the report: {e.strerror or e}") from None
     return 0 if result["ok"] else 1
@@ -214,7 +227,7 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "reliability")
+    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability")
                if s in result)
 
 

@@ -277,14 +277,16 @@ def markdown(result: dict) -> str:
     return "\n".join(lines + ["", END])
 
 
-def write_markdown(path: Path, block: str) -> None:
-    """Replace the bench block of `path` when it has one (docs/PERFORMANCE.md), else write the block alone."""
+def write_markdown(path: Path, block: str, begin: str = BEGIN, end: str = END) -> None:
+    """Replace the block between `begin` and `end` of `path` (docs/PERFORMANCE.md
+    has the bench block and the footprint block); a file without it gets the
+    block at its end, a missing file the block alone."""
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
         text = ""
-    if BEGIN in text and END in text:
-        text = re.sub(re.escape(BEGIN) + r".*?" + re.escape(END), lambda _: block, text, flags=re.S)
+    if begin in text and end in text:
+        text = re.sub(re.escape(begin) + r".*?" + re.escape(end), lambda _: block, text, flags=re.S)
     else:
-        text = block + "\n"
+        text = (text.rstrip("\n") + "\n\n" if text else "") + block + "\n"
     path.write_text(text, encoding="utf-8")

@@ -15,11 +15,11 @@ BEGIN, END = "<!-- status:begin (osdkc kit writes this part) -->", "<!-- status:
 # What each bundled implementation is, in the words a reader of generated/ wants.
 WHAT = {
     "construct": "Construct spec (spec/construct), the project's reference encoder/decoder",
-    "kaitai-python": "generated/python (Kaitai) + conformance/testees/kaitai_python_testee.py",
-    "js": "generated/javascript (Kaitai) + conformance/testees/javascript",
-    "java": "generated/java (Kaitai) + conformance/testees/java",
-    "go": "generated/go (Kaitai) + conformance/testees/go",
-    "c": "generated/c (tools/cgen) + conformance/testees/c",
+    "kaitai-python": "generated/python (Kaitai + libgen glue) + conformance/testees/kaitai_python_testee.py",
+    "js": "generated/javascript (Kaitai + libgen glue) + conformance/testees/javascript",
+    "java": "generated/java (Kaitai + libgen glue) + conformance/testees/java",
+    "go": "generated/go (Kaitai + libgen glue) + conformance/testees/go",
+    "c": "generated/c (tools/cgen + libgen encoders) + conformance/testees/c",
     "accel": "generated/c + generated/cpython as a Python extension (osdk_conformance/reference/_accel.c) + "
              "conformance/testees/accel_testee.py; decoding operations only",
 }
@@ -36,8 +36,8 @@ def render(status: dict) -> str:
                     f"{st.get('xfail', 0)} | {st.get('skip', 0)} | {verdict} |")
     scope = f" (selection: `{status['selection']}`)" if status.get("selection") else ""
     return "\n".join([BEGIN, "", f"Last `osdkc run --impl all`{scope}; skipped cases are operations an "
-                      "implementation reports as unsupported (the Kaitai targets cannot encode; the native "
-                      "decoder only decodes).", "",
+                      "implementation reports as unsupported (the native decoder only decodes; every "
+                      "generated library encodes too).", "",
                       *rows, "", END])
 
 

@@ -2,6 +2,7 @@ package main
 
 import (
 	"container/list"
+	"encoding/binary"
 	"encoding/hex"
 	"encoding/json"
 	"errors"
@@ -11,6 +12,8 @@ import (
 	"strings"
 	"sync"
 	"testing"
+
+	k "osdk-conformance.local/generated/go/osdk_kaitai"
 )
 
 // FuzzDecodeStream: the testee's receiver (Deframer) and stream decoder
@@ -22,7 +25,7 @@ import (
 // profile (in the tables' order), its top six bits plus one the read size;
 // the rest is the stream. A finding is a panic
 // (streamDecoder.frame is called directly, past the recover that keeps the
-// testee alive), an error that is not a Rejection, the class undecodable,
+// testee alive), an error that is not an *osdk_kaitai.Error, the class undecodable,
 // events out of stream order or outside the input, or a frame event that is
 // not LEN bytes from a start byte. The message carries the input's hex for
 // tools/fuzz_to_vector.py.
@@ -39,7 +42,7 @@ func FuzzDecodeStream(f *testing.F) {
 		// testee without tables must not pass as "nothing found".
 		panic(err)
 	}
-	for _, seed := range vectorSeeds(te.tb.Profiles) {
+	for _, seed := range vectorSeeds(k.Profiles) {
 		f.Add(seed)
 	}
 	f.Fuzz(func(t *testing.T, data []byte) {
@@ -171,40 +174,33 @@ func checkStream(te *Testee, data []byte) string {
 	if len(data) == 0 {
 		return ""
 	}
-	profiles := te.tb.Profiles
+	profiles := k.Profiles
 	profile := profiles[int(data[0])%len(profiles)]
 	size := int(data[0]>>2) + 1
 	stream := data[1:]
-	p, ok := te.profile(profile)
-	if !ok {
-		return "profile " + profile + " has no value in the tables (profile_values)"
-	}
 	var sizes []int
 	for n := len(stream) / size; n > 0; n-- {
 		sizes = append(sizes, size)
 	}
-	dec := &streamDecoder{t: te, profile: p, models: true, order: list.New(), pending: map[pendingKey]*list.Element{}}
-	d := NewDeframer(te.sums)
+	dec := &streamDecoder{t: te, profile: profile, models: true, order: list.New(), pending: map[pendingKey]*list.Element{}}
+	d := k.NewDeframer()
 	next := 0
-	check := func(evs []Event) string {
+	check := func(evs []k.Event) string {
 		for _, ev := range evs {
 			length := ev.Length
-			if ev.Kind == EvFrame {
-				length = len(ev.Raw)
-			}
 			if ev.Offset < next || length < 1 || ev.Offset+length > len(stream) {
 				return fmt.Sprintf("event %+v out of order or outside the %d-byte stream", ev, len(stream))
 			}
 			next = ev.Offset + 1 // a rejected start byte lets the scan resume at the next byte
 			switch ev.Kind {
-			case EvGarbage:
+			case k.EventGarbage:
 				next = ev.Offset + ev.Length
-			case EvRejected:
-				if ev.Error == "undecodable" || ev.Error == "" {
-					return fmt.Sprintf("receiver rejection with class %q", ev.Error)
+			case k.EventError:
+				if ev.Err == nil || ev.Err.Class == "undecodable" || ev.Err.Class == "" {
+					return fmt.Sprintf("receiver rejection without a class: %+v", ev.Err)
 				}
-			case EvFrame:
-				if ev.Raw[0] != sof || frameLength(ev.Raw) != len(ev.Raw) {
+			case k.EventFrame:
+				if len(ev.Raw) != ev.Length || ev.Raw[0] != 0xAA || int(binary.LittleEndian.Uint16(ev.Raw[1:3])&0x3FF) != len(ev.Raw) {
 					return fmt.Sprintf("frame event at %d is not one whole frame", ev.Offset)
 				}
 				if problem := checkFrame(dec, ev); problem != "" {
@@ -223,12 +219,12 @@ func checkStream(te *Testee, data []byte) string {
 }
 
 // checkFrame decodes one frame event as decode_stream does, minus its recover.
-func checkFrame(dec *streamDecoder, ev Event) string {
+func checkFrame(dec *streamDecoder, ev k.Event) string {
 	out, err := dec.frame(ev)
 	if err != nil {
-		var rej *Rejection
+		var rej *k.Error
 		if !errors.As(err, &rej) {
-			return fmt.Sprintf("frame at %d: internal error (not a Rejection): %v", ev.Offset, err)
+			return fmt.Sprintf("frame at %d: internal error (not a *osdk_kaitai.Error): %v", ev.Offset, err)
 		}
 		out = dec.errorEvent(ev, rej, nil)
 	}

@@ -19,108 +19,83 @@ func testTables(t *testing.T) *Tables {
 	return tb
 }
 
-func testSums(t *testing.T, tb *Tables) Checksums {
-	t.Helper()
-	te, err := NewTestee(tb)
-	if err != nil {
-		t.Fatal(err)
-	}
-	return te.sums
-}
-
-func TestCRCCheckValues(t *testing.T) {
-	tb := testTables(t)
-	for _, name := range []string{"crc16", "crc32"} {
-		c, err := NewCRC(tb.CRC[name])
-		if err != nil {
-			t.Fatal(err)
-		}
-		if got, want := c.Sum([]byte("123456789")), tb.CRC[name].Check; got != want {
-			t.Errorf("%s check value 0x%x, want 0x%x", name, got, want)
-		}
-	}
-	// A textbook CRC of the other shift direction: CRC-16/XMODEM.
-	x, _ := NewCRC(CRCParams{Width: 16, Poly: 0x1021})
-	if got := x.Sum([]byte("123456789")); got != 0x31C3 {
-		t.Errorf("CRC-16/XMODEM check value 0x%x, want 0x31c3", got)
-	}
-}
-
 // frame builds a plain frame with good CRCs around data (nil: header only).
-func frame(s Checksums, session byte, seq uint16, data []byte) []byte {
-	n := headerLen
+func frame(session byte, seq uint16, data []byte) []byte {
+	n := k.HeaderLen
 	if data != nil {
-		n += len(data) + crc32Len
+		n += len(data) + 4
 	}
-	f := make([]byte, headerLen, n)
-	f[0] = sof
+	f := make([]byte, k.HeaderLen, n)
+	f[0] = 0xAA
 	binary.LittleEndian.PutUint16(f[1:], uint16(n))
 	f[3] = session
 	binary.LittleEndian.PutUint16(f[8:], seq)
-	binary.LittleEndian.PutUint16(f[10:], uint16(s.crc16.Sum(f[:10])))
+	binary.LittleEndian.PutUint16(f[10:], k.Crc16(f[:10]))
 	if data != nil {
 		f = append(f, data...)
-		f = binary.LittleEndian.AppendUint32(f, uint32(s.crc32.Sum(f)))
+		f = binary.LittleEndian.AppendUint32(f, k.Crc32(f))
 	}
 	return f
 }
 
 type brief struct {
-	kind   EventKind
+	kind   k.EventKind
 	offset int
 	error  string
 	length int
 }
 
-func deframeAll(s Checksums, data []byte, sizes []int) []brief {
-	d := NewDeframer(s)
-	var evs []Event
+func deframeAll(data []byte, sizes []int) []brief {
+	d := k.NewDeframer()
+	var evs []k.Event
 	for _, c := range splitChunks(data, sizes) {
 		evs = append(evs, d.Feed(c)...)
 	}
 	evs = append(evs, d.Finish()...)
 	out := make([]brief, len(evs))
 	for i, e := range evs {
-		out[i] = brief{e.Kind, e.Offset, e.Error, e.Length}
-		if e.Kind == EvFrame {
-			out[i].length = len(e.Raw)
+		out[i] = brief{e.Kind, e.Offset, "", e.Length}
+		if e.Err != nil {
+			out[i].error = e.Err.Class
 		}
 	}
 	return out
 }
 
+// The library's receiver as decode_stream uses it: resync after a bad
+// header and a bad CRC-32, chunk-independent.
 func TestDeframerResync(t *testing.T) {
-	s := testSums(t, testTables(t))
-	good := frame(s, 2, 7, []byte{0x01, 0x03, 0xAA, 0x55})
-	short := frame(s, 0, 1, nil)
+	good := frame(2, 7, []byte{0x01, 0x03, 0xAA, 0x55})
+	short := frame(0, 1, nil)
 	// A frame whose CRC-32 is wrong and which hides a good header-only frame.
-	outer := frame(s, 2, 8, append(append([]byte{0x00, 0x00}, short...), 0x00))
+	outer := frame(2, 8, append(append([]byte{0x00, 0x00}, short...), 0x00))
 	outer[len(outer)-1] ^= 0xFF
 
 	var in []byte
-	in = append(in, 0x01, 0x02)            // garbage
-	in = append(in, 0xAA, 0x00)            // a start byte with no header behind it
-	in = append(in, good...)               // offset 4
-	in = append(in, outer...)              // offset 4+20
-	in = append(in, good[:headerLen+2]...) // a truncated tail
+	in = append(in, 0x01, 0x02)              // garbage
+	in = append(in, 0xAA, 0x00)              // a start byte with no header behind it
+	in = append(in, good...)                 // offset 4
+	in = append(in, outer...)                // offset 4+20
+	in = append(in, good[:k.HeaderLen+2]...) // a truncated tail
 	o := 4 + len(good)
+	h := k.HeaderLen
 	want := []brief{
-		{EvGarbage, 0, "", 2},
-		{EvRejected, 2, "bad_crc16", 1},
-		{EvGarbage, 3, "", 1},
-		{EvFrame, 4, "", len(good)},
-		{EvRejected, o, "bad_crc32", len(outer)},
+		{k.EventGarbage, 0, "", 2},
+		{k.EventError, 2, "bad_crc16", 1},
+		{k.EventGarbage, 3, "", 1},
+		{k.EventFrame, 4, "", len(good)},
+		{k.EventError, o, "bad_crc32", len(outer)},
 		// rescanning after the rejected start byte: the rest of its header
 		// and two value bytes, then the frame hidden in its value
-		{EvGarbage, o + 1, "", headerLen + 1},
-		{EvFrame, o + headerLen + 2, "", headerLen},
-		{EvGarbage, o + 2*headerLen + 2, "", len(outer) - 2*headerLen - 2},
-		{EvRejected, o + len(outer), "truncated_frame", headerLen + 2},
-		{EvGarbage, o + len(outer) + 1, "", headerLen + 1},
+		{k.EventGarbage, o + 1, "", h + 1},
+		{k.EventFrame, o + h + 2, "", h},
+		{k.EventGarbage, o + 2*h + 2, "", len(outer) - 2*h - 2},
+		{k.EventError, o + len(outer), "truncated_frame", h + 2},
+		{k.EventGarbage, o + len(outer) + 1, "", h + 1},
 	}
 
 	for _, sizes := range [][]int{nil, {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1}, {5, 0, 30, 3}} {
-		got := deframeAll(s, in, sizes)
+		got := deframeAll(in, sizes)
 		if !reflect.DeepEqual(got, want) {
 			t.Errorf("chunks %v:\n got %v\nwant %v", sizes, got, want)
 		}

@@ -8,6 +8,7 @@ import (
 	"fmt"
 	"math"
 	"regexp"
+	"strconv"
 	"strings"
 
 	"github.com/kaitai-io/kaitai_struct_go_runtime/kaitai"
@@ -20,30 +21,28 @@ const (
 	pendingLimit = 1024 // unanswered commands remembered for ACK matching
 )
 
-var operations = []string{"decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control"}
+var operations = []string{"decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
+	"encode_movement_control", "encode_frame"}
 
 // The range of each movement-control setpoint, by field.
 var axisRange = []struct{ axis, which string }{
 	{"x", "horizontal"}, {"y", "horizontal"}, {"z", "vertical"}, {"yaw", "yaw"},
 }
 
-// Testee answers requests with the generated parsers and the tables.
+// Testee answers requests with the generated library (deframer, decoding,
+// errors, encoders) and the tables (value model, control modes).
 type Testee struct {
 	tb    *Tables
 	model Modeler
-	sums  Checksums
 }
 
 func NewTestee(tb *Tables) (*Testee, error) {
-	crc16, err := NewCRC(tb.CRC["crc16"])
-	if err != nil {
-		return nil, err
-	}
-	crc32, err := NewCRC(tb.CRC["crc32"])
-	if err != nil {
-		return nil, err
-	}
-	return &Testee{tb: tb, model: Modeler{tb}, sums: Checksums{crc16, crc32}}, nil
+	return &Testee{tb: tb, model: Modeler{tb}}, nil
+}
+
+// reject is a rejection of the testee's own checks (check_movement_control).
+func reject(class, format string, args ...any) *k.Error {
+	return &k.Error{Class: class, Detail: fmt.Sprintf(format, args...)}
 }
 
 // badRequest is input the testee cannot use (answered bad_request).
@@ -106,18 +105,8 @@ func integer(key string, v any) (int64, error) {
 }
 
 func (r request) byteArg(key string) (uint8, error) {
-	v, err := r.arg(key)
-	if err != nil {
-		return 0, err
-	}
-	i, err := integer(key, v)
-	if err != nil {
-		return 0, err
-	}
-	if i < 0 || i > 0xFF {
-		return 0, badf("argument %q must be 0..255", key)
-	}
-	return uint8(i), nil
+	i, err := r.intArg(key, 0xFF)
+	return uint8(i), err
 }
 
 var hexText = regexp.MustCompile(`^(?:[0-9a-fA-F]{2})*$`)
@@ -133,32 +122,12 @@ func (r request) hexBytes() ([]byte, error) {
 	return hex.DecodeString(s)
 }
 
-// profile is the value the generated parsers take for a profile id.
-func (t *Testee) profile(name string) (k.OsdkPayload_Profile, bool) {
-	n, ok := t.tb.ProfileValues[name]
-	return k.OsdkPayload_Profile(n), ok
-}
-
-// ---- parsing ----------------------------------------------------------------------
-
 func stream(data []byte) *kaitai.Stream {
 	return kaitai.NewStream(bytes.NewReader(data))
 }
 
-func (t *Testee) parsePayload(data []byte, cmdSet, cmdID uint8, isAck bool, p k.OsdkPayload_Profile) (*k.OsdkPayload, error) {
-	obj := k.NewOsdkPayload(cmdSet, cmdID, isAck, p)
-	if err := obj.Read(stream(data), nil, obj); err != nil {
-		return nil, t.tb.rejection(err)
-	}
-	return obj, nil
-}
-
-func (t *Testee) parseFrame(data []byte, p k.OsdkPayload_Profile) (*k.OsdkFrame, error) {
-	obj := k.NewOsdkFrame(p)
-	if err := obj.Read(stream(data), nil, obj); err != nil {
-		return nil, t.tb.rejection(err)
-	}
-	return obj, nil
+func (t *Testee) parsePayload(data []byte, cmdSet, cmdID uint8, isAck bool, profile string) (*k.OsdkPayload, error) {
+	return k.DecodePayload(data, cmdSet, cmdID, isAck, profile)
 }
 
 func (t *Testee) bodyModel(p *k.OsdkPayload) (any, error) {
@@ -175,7 +144,7 @@ func (t *Testee) bodyModel(p *k.OsdkPayload) (any, error) {
 
 // ---- operations ---------------------------------------------------------------------
 
-func (t *Testee) decodePayload(r request, p k.OsdkPayload_Profile, _ string) (Obj, error) {
+func (t *Testee) decodePayload(r request, profile string) (Obj, error) {
 	data, err := r.hexBytes()
 	if err != nil {
 		return nil, err
@@ -192,7 +161,7 @@ func (t *Testee) decodePayload(r request, p k.OsdkPayload_Profile, _ string) (Ob
 	if err != nil {
 		return nil, err
 	}
-	obj, err := t.parsePayload(data, cmdSet, cmdID, isAck, p)
+	obj, err := t.parsePayload(data, cmdSet, cmdID, isAck, profile)
 	if err != nil {
 		return nil, err
 	}
@@ -218,14 +187,14 @@ func combination(c *int) any {
 	return *c
 }
 
-func (t *Testee) classify(r request, _ k.OsdkPayload_Profile, profile string) (Obj, error) {
+func (t *Testee) classify(r request, profile string) (Obj, error) {
 	b, err := r.byteArg("byte")
 	if err != nil {
 		return nil, err
 	}
 	cm := k.NewOsdkControlMode()
 	if err := cm.Read(stream([]byte{b}), nil, cm); err != nil {
-		return nil, t.tb.rejection(err)
+		return nil, fmt.Errorf("control mode byte 0x%02x: %w", b, err)
 	}
 	fields, err := t.model.Object(cm)
 	if err != nil {
@@ -238,14 +207,14 @@ func (t *Testee) classify(r request, _ k.OsdkPayload_Profile, profile string) (O
 	return Obj{{"fields", fields}, {"classification", c.Classification}, {"combination", combination(c.Combination)}}, nil
 }
 
-func (t *Testee) checkMovementControl(r request, p k.OsdkPayload_Profile, profile string) (Obj, error) {
+func (t *Testee) checkMovementControl(r request, profile string) (Obj, error) {
 	data, err := r.hexBytes()
 	if err != nil {
 		return nil, err
 	}
 	// As a command value: payload (0x01, 0x03) is osdk_movement_control plus
 	// the check that no bytes trail it.
-	obj, err := t.parsePayload(data, 0x01, 0x03, false, p)
+	obj, err := t.parsePayload(data, k.CommandMovementControl.CmdSet, k.CommandMovementControl.CmdID, false, profile)
 	if err != nil {
 		return nil, err
 	}
@@ -289,36 +258,12 @@ func bound(b *float64) string {
 	return fmt.Sprint(*b)
 }
 
-func (t *Testee) decodeFrame(r request, p k.OsdkPayload_Profile, _ string) (Obj, error) {
+func (t *Testee) decodeFrame(r request, profile string) (Obj, error) {
 	data, err := r.hexBytes()
 	if err != nil {
 		return nil, err
 	}
-	// The receiver's checks, in the order a receiver meets them.
-	switch {
-	case len(data) == 0:
-		return nil, reject("truncated_frame", "no bytes")
-	case data[0] != sof:
-		return nil, reject("bad_sof", "first byte 0x%02x is not the start byte", data[0])
-	case len(data) < headerLen:
-		return nil, reject("truncated_frame", "%d bytes, less than a header", len(data))
-	}
-	if class, detail := t.sums.headerProblem(data[:headerLen]); class != "" {
-		return nil, reject(class, "%s", detail)
-	}
-	length := frameLength(data)
-	switch {
-	case len(data) < length:
-		return nil, reject("truncated_frame", "%d bytes of a frame of LEN %d", len(data), length)
-	case len(data) > length:
-		return nil, reject("length_mismatch", "%d bytes for LEN %d", len(data), length)
-	}
-	if length > headerLen {
-		if bad, detail := t.sums.crc32Problem(data); bad {
-			return nil, reject("bad_crc32", "%s", detail)
-		}
-	}
-	f, err := t.parseFrame(data, p)
+	f, err := k.DecodeFrame(data, profile)
 	if err != nil {
 		return nil, err
 	}
@@ -327,6 +272,96 @@ func (t *Testee) decodeFrame(r request, p k.OsdkPayload_Profile, _ string) (Obj,
 		return nil, err
 	}
 	return Obj{{"frame", m}}, nil
+}
+
+// f32Arg is a float argument {"f32": "0x…"}: its bits, never a float64.
+func (r request) f32Arg(key string) (uint32, error) {
+	v, err := r.arg(key)
+	if err != nil {
+		return 0, err
+	}
+	m, ok := v.(map[string]any)
+	if !ok {
+		return 0, badf("argument %q must be {\"f32\": \"0x…\"}", key)
+	}
+	s, ok := m["f32"].(string)
+	if !ok || !strings.HasPrefix(s, "0x") || len(s) < 3 || len(s) > 10 {
+		return 0, badf("argument %q must be {\"f32\": \"0x…\"} with up to 8 hex digits", key)
+	}
+	bits, err := strconv.ParseUint(s[2:], 16, 32)
+	if err != nil {
+		return 0, badf("argument %q: %q is not hex", key, s)
+	}
+	return uint32(bits), nil
+}
+
+func (r request) intArg(key string, top int64) (int64, error) {
+	v, err := r.arg(key)
+	if err != nil {
+		return 0, err
+	}
+	i, err := integer(key, v)
+	if err != nil {
+		return 0, err
+	}
+	if i < 0 || i > top {
+		return 0, badf("argument %q must be 0..%d", key, top)
+	}
+	return i, nil
+}
+
+func (t *Testee) encodeMovementControl(r request, _ string) (Obj, error) {
+	mode, err := r.byteArg("mode")
+	if err != nil {
+		return nil, err
+	}
+	var bits [4]uint32
+	for i, axis := range []string{"x", "y", "z", "yaw"} {
+		if bits[i], err = r.f32Arg(axis); err != nil {
+			return nil, err
+		}
+	}
+	return Obj{{"hex", hexString(k.EncodeMovementControlBits(mode, bits[0], bits[1], bits[2], bits[3]))}}, nil
+}
+
+func (t *Testee) encodeFrame(r request, _ string) (Obj, error) {
+	isAck, err := r.boolean("is_ack")
+	if err != nil {
+		return nil, err
+	}
+	var cmdSet, cmdID uint8
+	if !isAck {
+		if cmdSet, err = r.byteArg("cmd_set"); err != nil {
+			return nil, err
+		}
+		if cmdID, err = r.byteArg("cmd_id"); err != nil {
+			return nil, err
+		}
+	}
+	session, err := r.intArg("session", 31)
+	if err != nil {
+		return nil, err
+	}
+	seq, err := r.intArg("seq", 0xFFFF)
+	if err != nil {
+		return nil, err
+	}
+	s, err := r.str("value")
+	if err != nil {
+		return nil, err
+	}
+	if !hexText.MatchString(s) {
+		return nil, badf("argument 'value' is not a hex string of whole bytes")
+	}
+	value, _ := hex.DecodeString(s)
+	raw, err := k.EncodeFrame(cmdSet, cmdID, isAck, uint8(session), uint16(seq), value)
+	if err != nil {
+		if errors.Is(err, k.ErrInvalidArgument) {
+			return nil, badf("%v", err)
+		}
+		return nil, err
+	}
+	return Obj{{"hex", hexString(raw)}}, nil
 }
 
 // ---- streams ----------------------------------------------------------------------
@@ -346,18 +381,18 @@ type pendingCmd struct {
 // not the value model).
 type streamDecoder struct {
 	t       *Testee
-	profile k.OsdkPayload_Profile
+	profile string
 	models  bool
 	order   *list.List
 	pending map[pendingKey]*list.Element
 }
 
-func (d *streamDecoder) event(ev Event) (out Obj) {
+func (d *streamDecoder) event(ev k.Event) (out Obj) {
 	switch ev.Kind {
-	case EvGarbage:
+	case k.EventGarbage:
 		return Obj{{"offset", ev.Offset}, {"kind", "garbage"}, {"length", ev.Length}}
-	case EvRejected:
-		return Obj{{"offset", ev.Offset}, {"kind", "error"}, {"error", ev.Error}, {"detail", ev.Detail}, {"length", ev.Length}}
+	case k.EventError:
+		return Obj{{"offset", ev.Offset}, {"kind", "error"}, {"error", ev.Err.Class}, {"detail", ev.Err.Detail}, {"length", ev.Length}}
 	}
 	defer func() { // our bug must not cost the rest of the stream
 		if p := recover(); p != nil {
@@ -366,7 +401,7 @@ func (d *streamDecoder) event(ev Event) (out Obj) {
 	}()
 	out, err := d.frame(ev)
 	if err != nil {
-		var rej *Rejection
+		var rej *k.Error
 		if !errors.As(err, &rej) {
 			rej = reject("undecodable", "internal error (%v)", err)
 		}
@@ -375,31 +410,31 @@ func (d *streamDecoder) event(ev Event) (out Obj) {
 	return out
 }
 
-func (d *streamDecoder) errorEvent(ev Event, r *Rejection, ackOf any) Obj {
-	out := Obj{{"offset", ev.Offset}, {"kind", "error"}, {"error", r.Class}, {"detail", r.Detail}, {"length", len(ev.Raw)}}
+func (d *streamDecoder) errorEvent(ev k.Event, r *k.Error, ackOf any) Obj {
+	out := Obj{{"offset", ev.Offset}, {"kind", "error"}, {"error", r.Class}, {"detail", r.Detail}, {"length", ev.Length}}
 	if ackOf != nil {
 		out = append(out, KV{"ack_of", ackOf})
 	}
 	return out
 }
 
-func (d *streamDecoder) frame(ev Event) (Obj, error) {
-	f, err := d.t.parseFrame(ev.Raw, d.profile)
+func (d *streamDecoder) frame(ev k.Event) (Obj, error) {
+	f, err := k.DecodeFrame(ev.Raw, d.profile)
 	if err != nil {
 		return nil, err
 	}
 	out := Obj{{"offset", ev.Offset}, {"kind", "frame"}}
-	if fd, ok := f.Data.(*k.OsdkFrame_FrameData); ok && f.Len > headerLen {
+	if fd, ok := f.Data.(*k.OsdkFrame_FrameData); ok && f.Len > k.HeaderLen {
 		key := pendingKey{f.Session, uint64(f.Seq)}
 		if f.IsAck {
 			if el, ok := d.pending[key]; ok {
 				cmd := d.order.Remove(el).(pendingCmd)
 				delete(d.pending, key)
-				ackOf := d.t.tb.commandName(int(cmd.cmdSet), int(cmd.cmdID))
+				ackOf := commandName(cmd.cmdSet, cmd.cmdID)
 				out = append(out, KV{"ack_of", ackOf})
 				ack, err := d.t.parsePayload(fd.AckValue, cmd.cmdSet, cmd.cmdID, true, d.profile)
 				if err != nil {
-					var rej *Rejection
+					var rej *k.Error
 					if errors.As(err, &rej) {
 						return d.errorEvent(ev, rej, ackOf), nil
 					}
@@ -439,14 +474,14 @@ func (d *streamDecoder) frame(ev Event) (Obj, error) {
 // eventStream is decode_stream's loop: each read through the deframer and
 // the stream decoder, each event to onEvent (also the bench mode's loop).
 type eventStream struct {
-	deframer *Deframer
+	deframer *k.Deframer
 	dec      *streamDecoder
 	onEvent  func(Obj)
 }
 
-func (t *Testee) newEventStream(p k.OsdkPayload_Profile, models bool, onEvent func(Obj)) *eventStream {
+func (t *Testee) newEventStream(p string, models bool, onEvent func(Obj)) *eventStream {
 	dec := &streamDecoder{t: t, profile: p, models: models, order: list.New(), pending: map[pendingKey]*list.Element{}}
-	return &eventStream{deframer: NewDeframer(t.sums), dec: dec, onEvent: onEvent}
+	return &eventStream{deframer: k.NewDeframer(), dec: dec, onEvent: onEvent}
 }
 
 func (s *eventStream) Feed(chunk []byte) {
@@ -461,7 +496,7 @@ func (s *eventStream) Finish() {
 	}
 }
 
-func (t *Testee) decodeStream(r request, p k.OsdkPayload_Profile, _ string) (Obj, error) {
+func (t *Testee) decodeStream(r request, p string) (Obj, error) {
 	data, err := r.hexBytes()
 	if err != nil {
 		return nil, err
@@ -493,15 +528,20 @@ func (t *Testee) decodeStream(r request, p k.OsdkPayload_Profile, _ string) (Obj
 
 // ---- dispatch -----------------------------------------------------------------------
 
-type operation func(t *Testee, r request, p k.OsdkPayload_Profile, profile string) (Obj, error)
+type operation func(t *Testee, r request, profile string) (Obj, error)
 
 var ops = map[string]operation{
-	"decode_stream":          (*Testee).decodeStream,
-	"decode_frame":           (*Testee).decodeFrame,
-	"decode_payload":         (*Testee).decodePayload,
-	"classify_control_mode":  (*Testee).classify,
-	"check_movement_control": (*Testee).checkMovementControl,
+	"decode_stream":           (*Testee).decodeStream,
+	"decode_frame":            (*Testee).decodeFrame,
+	"decode_payload":          (*Testee).decodePayload,
+	"classify_control_mode":   (*Testee).classify,
+	"check_movement_control":  (*Testee).checkMovementControl,
+	"encode_movement_control": (*Testee).encodeMovementControl,
+	"encode_frame":            (*Testee).encodeFrame,
 }
+
+// The operations whose requests carry no profile.
+var withoutProfile = map[string]bool{"encode_movement_control": true, "encode_frame": true}
 
 // answer is the response to one request; an error is a bad request
 // (badRequest) or a bug of ours.
@@ -511,8 +551,8 @@ func (t *Testee) answer(r request) (Obj, error) {
 		return nil, badf(`a request is a JSON object with an "op" string`)
 	}
 	if op == "capabilities" {
-		profiles := make([]any, len(t.tb.Profiles))
-		for i, p := range t.tb.Profiles {
+		profiles := make([]any, len(k.Profiles))
+		for i, p := range k.Profiles {
 			profiles[i] = p
 		}
 		opsList := make([]any, len(operations))
@@ -523,16 +563,12 @@ func (t *Testee) answer(r request) (Obj, error) {
 	}
 	fn, known := ops[op]
 	profile, _ := r["profile"].(string)
-	if !known || !t.knownProfile(profile) {
+	if !known || (!withoutProfile[op] && !knownProfile(profile)) {
 		return Obj{{"ok", false}, {"unsupported", true}}, nil
 	}
-	p, ok := t.profile(profile)
-	if !ok {
-		return nil, fmt.Errorf("profile %s has no value in the tables (profile_values)", profile)
-	}
-	result, err := fn(t, r, p, profile)
+	result, err := fn(t, r, profile)
 	if err != nil {
-		var rej *Rejection
+		var rej *k.Error
 		if errors.As(err, &rej) {
 			return Obj{{"ok", false}, {"error", rej.Class}, {"detail", rej.Detail}}, nil
 		}
@@ -541,11 +577,34 @@ func (t *Testee) answer(r request) (Obj, error) {
 	return Obj{{"ok", true}, {"result", result}}, nil
 }
 
-func (t *Testee) knownProfile(name string) bool {
-	for _, p := range t.tb.Profiles {
-		if p == name {
-			return true
-		}
+func knownProfile(name string) bool {
+	_, err := k.ProfileOf(name)
+	return err == nil
+}
+
+// commandName is ack_of's name of a command: "unknown" for one the spec does not name.
+func commandName(cmdSet, cmdID uint8) string {
+	if n := k.CommandName(cmdSet, cmdID); n != "" {
+		return n
 	}
-	return false
+	return "unknown"
+}
+
+// splitChunks cuts data into reads of the given sizes; what they leave over
+// is one last read (sizes past the end give empty reads).
+func splitChunks(data []byte, sizes []int) [][]byte {
+	var out [][]byte
+	pos := 0
+	for _, size := range sizes {
+		end := len(data)
+		if size < end-pos {
+			end = pos + size
+		}
+		out = append(out, data[pos:end])
+		pos = end // clamped: a huge size must not overflow
+	}
+	if pos < len(data) {
+		out = append(out, data[pos:])
+	}
+	return out
 }

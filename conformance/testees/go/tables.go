@@ -9,38 +9,16 @@ import (
 	"strconv"
 )
 
-// Tables is the part of generated/tables/osdk_tables.json this testee uses:
-// everything it needs besides the generated parser.
+// Tables is the part of generated/tables/osdk_tables.json this testee
+// uses beside the generated library: the value model it answers in and the
+// control mode tables.
 type Tables struct {
-	Profiles      []string                     `json:"profiles"`
-	ProfileValues map[string]int64             `json:"profile_values"`
-	CRC           map[string]CRCParams         `json:"crc"`
-	Commands      []Command                    `json:"commands"`
-	ErrorByField  map[string]string            `json:"error_by_field"`
-	ControlModes  map[string]ControlModeTable  `json:"control_modes"`
-	Model         ModelTables                  `json:"model"`
-	IfExpr        map[string]map[string]string `json:"if_expressions"`
-	Checked       map[string][]string          `json:"checked_fields"`
+	ControlModes map[string]ControlModeTable  `json:"control_modes"`
+	Model        ModelTables                  `json:"model"`
+	IfExpr       map[string]map[string]string `json:"if_expressions"`
 
 	// Built after loading.
-	commandNames map[[2]int]string
-	typeByClass  map[string]string // Go type name (class path joined by "_") -> type key
-}
-
-type CRCParams struct {
-	Width      int    `json:"width"`
-	Poly       uint64 `json:"poly"`
-	Init       uint64 `json:"init"`
-	ReflectIn  bool   `json:"reflect_in"`
-	ReflectOut bool   `json:"reflect_out"`
-	XorOut     uint64 `json:"xorout"`
-	Check      uint64 `json:"check"`
-}
-
-type Command struct {
-	CmdSet int    `json:"cmd_set"`
-	CmdID  int    `json:"cmd_id"`
-	Name   string `json:"name"`
+	typeByClass map[string]string // Go type name (class path joined by "_") -> type key
 }
 
 type ModeInfo struct {
@@ -113,12 +91,8 @@ func loadTables(path string) (*Tables, error) {
 	if err := json.Unmarshal(text, t); err != nil {
 		return nil, fmt.Errorf("%s: %w", path, err)
 	}
-	if len(t.Model.Types) == 0 || len(t.CRC) == 0 || len(t.ControlModes) == 0 || len(t.ProfileValues) != len(t.Profiles) {
+	if len(t.Model.Types) == 0 || len(t.ControlModes) == 0 {
 		return nil, fmt.Errorf("%s: incomplete tables", path)
-	}
-	t.commandNames = map[[2]int]string{}
-	for _, c := range t.Commands {
-		t.commandNames[[2]int{c.CmdSet, c.CmdID}] = c.Name
 	}
 	t.typeByClass = map[string]string{}
 	for key, tm := range t.Model.Types {
@@ -132,13 +106,6 @@ func loadTables(path string) (*Tables, error) {
 		t.typeByClass[name] = key
 	}
 	return t, nil
-}
-
-func (t *Tables) commandName(cmdSet, cmdID int) string {
-	if n, ok := t.commandNames[[2]int{cmdSet, cmdID}]; ok {
-		return n
-	}
-	return "unknown"
 }
 
 // enumName is the spec's name of an enum value, or nil.

@@ -17,7 +17,7 @@
 // must be the NaN Kaitai returned modulo the quiet bit, else it is an error.
 
 const { tables } = require('./tables');
-const { typeKeyOf } = require('./kaitai');
+const { typeKeyOf } = require('osdk-kaitai');
 
 const TYPES = tables.model.types;
 const ENUMS = tables.model.enums;
@@ -110,7 +110,7 @@ function element(v, f, owner, raw, wire, pos) {
     return [m, f.kind === 'int' ? pos + f.width : pos];
   }
   if (v instanceof Uint8Array) return [hexOf(v), pos + v.length];
-  if (typeKeyOf(v) !== undefined) {
+  if (typeKeyOf(v) !== null) {
     if (raw instanceof Uint8Array) return [structModel(v, raw, 0)[0], pos + raw.length];
     return structModel(v, wire, pos);
   }

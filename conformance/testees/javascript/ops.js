@@ -1,24 +1,33 @@
 'use strict';
-// The operations of conformance/PROTOCOL.md, as the Kaitai-Python testee
-// (conformance/testees/kaitai_python_testee.py) does them: layouts, fields,
-// enums and `valid` checks come from the generated parsers; CRCs, deframing,
-// ACK matching, mode classification and ranges are glue over the tables.
+// The operations of conformance/PROTOCOL.md over the generated library
+// (generated/javascript, the npm package osdk-kaitai): its deframer, frame
+// and payload decoding, errors and encoders. ACK matching, the control mode
+// classification and ranges, and the value model are the testee's.
 
+const osdk = require('osdk-kaitai');
 const { tables } = require('./tables');
-const { HEADER_LEN, Deframer, crc32Matches, frameLength, headerProblem, splitChunks } = require('./deframe');
-const { OsdkFrame, Rejection, oneLine, parseControlMode, parseFrame, parsePayload } = require('./kaitai');
 const { modelOf } = require('./model');
 
 const NAME = 'osdk-kaitai-javascript';
-const PROFILES = tables.profiles;
+const PROFILES = osdk.PROFILES;
 const AXIS_RANGE = { x: 'horizontal', y: 'horizontal', z: 'vertical', yaw: 'yaw' };
 const PENDING_LIMIT = 1024; // unanswered commands remembered for ACK matching
 
-const COMMAND_NAMES = new Map(tables.commands.map((c) => [`${c.cmd_set}.${c.cmd_id}`, c.name]));
-const commandName = (cmdSet, cmdId) => COMMAND_NAMES.get(`${cmdSet}.${cmdId}`) || 'unknown';
+const commandName = (cmdSet, cmdId) => osdk.commandName(cmdSet, cmdId) || 'unknown';
 
 class BadRequest extends Error {}
 BadRequest.prototype.name = 'BadRequest';
+
+// A rejection of the testee's own checks (check_movement_control).
+class Rejection extends Error {
+  constructor(cls, detail) {
+    super(detail);
+    this.cls = cls;
+    this.detail = detail;
+  }
+}
+
+const oneLine = (err) => String(err && err.message !== undefined ? err.message : err).replace(/\s+/g, ' ').trim();
 
 // ---- arguments ------------------------------------------------------------------------
 
@@ -30,21 +39,43 @@ function arg(req, key, kind) {
     boolean: typeof v === 'boolean',
     string: typeof v === 'string',
     list: Array.isArray(v),
+    object: v !== null && typeof v === 'object' && !Array.isArray(v),
   }[kind];
   if (!ok) throw new BadRequest(`argument '${key}' must be a ${kind}`);
   return v;
 }
 
-function hexArg(req) {
-  const text = arg(req, 'hex', 'string');
-  if (!/^(?:[0-9a-fA-F]{2})*$/.test(text)) throw new BadRequest("argument 'hex' is not a hex string of whole bytes");
-  return Buffer.from(text, 'hex');
+function hexOfArg(req, key) {
+  const text = arg(req, key, 'string');
+  if (!/^(?:[0-9a-fA-F]{2})*$/.test(text)) throw new BadRequest(`argument '${key}' is not a hex string of whole bytes`);
+  return text;
 }
 
-function byteArg(req, key) {
+const hexArg = (req) => Buffer.from(hexOfArg(req, 'hex'), 'hex');
+
+const hexOf = (bytes) => Buffer.from(bytes.buffer, bytes.byteOffset, bytes.length).toString('hex');
+
+// The control mode byte alone, through the generated class (no library call decodes it).
+function parseControlMode(byte) {
+  return new osdk.OsdkControlMode(new osdk.KaitaiStream(new Uint8Array([byte])), null, null);
+}
+
+function intArg(req, key, max) {
   const v = arg(req, key, 'integer');
-  if (v < 0 || v > 0xff) throw new BadRequest(`argument '${key}' must be 0..255`);
+  if (v < 0 || v > max) throw new BadRequest(`argument '${key}' must be 0..${max}`);
   return v;
+}
+
+const byteArg = (req, key) => intArg(req, key, 0xff);
+
+// A float request argument {"f32": "0x…"}: its bits, for the encoder bit for bit.
+function f32Arg(req, key) {
+  const v = arg(req, key, 'object');
+  const text = v.f32;
+  if (typeof text !== 'string' || !/^0x[0-9a-fA-F]{1,8}$/.test(text)) {
+    throw new BadRequest(`argument '${key}' must be {"f32": "0x…"} with at most 8 hex digits`);
+  }
+  return osdk.f32Bits(Number.parseInt(text.slice(2), 16));
 }
 
 // ---- operations -------------------------------------------------------------------------
@@ -54,7 +85,7 @@ function decodePayload(req, profile) {
   const cmdSet = byteArg(req, 'cmd_set');
   const cmdId = byteArg(req, 'cmd_id');
   const isAck = arg(req, 'is_ack', 'boolean');
-  return { value: modelOf(parsePayload(data, cmdSet, cmdId, isAck, profile), data).body };
+  return { value: modelOf(osdk.decodePayload(data, cmdSet, cmdId, isAck, profile), data) };
 }
 
 function classify(req, profile) {
@@ -67,8 +98,9 @@ function classify(req, profile) {
 function checkMovementControl(req, profile) {
   const data = hexArg(req);
   // As a command value: OsdkPayload(0x01, 0x03) is osdk_movement_control plus the trailing-bytes check.
-  const payload = parsePayload(data, 0x01, 0x03, false, profile);
-  const value = modelOf(payload, data).body;
+  const [cmdSet, cmdId] = osdk.COMMANDS.movement_control;
+  const body = osdk.decodePayload(data, cmdSet, cmdId, false, profile);
+  const value = modelOf(body, data);
   const byte = data[0];
   const modes = tables.control_modes[profile];
   const mode = modes.modes[byte];
@@ -77,7 +109,7 @@ function checkMovementControl(req, profile) {
   }
   const ranges = modes.ranges[String(mode.combination)];
   for (const [axis, which] of Object.entries(AXIS_RANGE)) {
-    const v = payload.body[axis]; // a double; a quieted NaN is still a NaN
+    const v = body[axis]; // a double; a quieted NaN is still a NaN
     const { min, max } = ranges[which];
     if (!Number.isFinite(v) || (min !== null && v < min) || (max !== null && v > max)) {
       throw new Rejection('out_of_range', `${axis} = ${v} outside the ${which} range ${min}..${max}`);
@@ -88,17 +120,27 @@ function checkMovementControl(req, profile) {
 
 function decodeFrame(req, profile) {
   const data = hexArg(req);
-  // The receiver's checks, in the order a receiver meets them.
-  if (!data.length) throw new Rejection('truncated_frame', 'no bytes');
-  if (data[0] !== 0xaa) throw new Rejection('bad_sof', `first byte 0x${data[0].toString(16)} is not the start byte`);
-  if (data.length < HEADER_LEN) throw new Rejection('truncated_frame', `${data.length} bytes, less than a header`);
-  const problem = headerProblem(data.subarray(0, HEADER_LEN));
-  if (problem) throw new Rejection(problem[0], problem[1]);
-  const length = frameLength(data);
-  if (data.length < length) throw new Rejection('truncated_frame', `${data.length} bytes of a frame of LEN ${length}`);
-  if (data.length > length) throw new Rejection('length_mismatch', `${data.length} bytes for LEN ${length}`);
-  if (length > HEADER_LEN && !crc32Matches(data)) throw new Rejection('bad_crc32', 'CRC-32 does not match');
-  return { frame: modelOf(parseFrame(data, profile), data) };
+  return { frame: modelOf(osdk.decodeFrame(data, profile), data) };
+}
+
+function encodeMovementControl(req) {
+  const mode = byteArg(req, 'mode');
+  const [x, y, z, yaw] = ['x', 'y', 'z', 'yaw'].map((k) => f32Arg(req, k));
+  return { hex: hexOf(osdk.encodeMovementControl(mode, x, y, z, yaw)) };
+}
+
+function encodeFrame(req) {
+  const isAck = arg(req, 'is_ack', 'boolean');
+  const has = (k) => Object.prototype.hasOwnProperty.call(req, k);
+  const cmdSet = has('cmd_set') ? byteArg(req, 'cmd_set') : null;
+  const cmdId = has('cmd_id') ? byteArg(req, 'cmd_id') : null;
+  if ((cmdSet === null) !== (cmdId === null) || (isAck && cmdSet !== null)) {
+    throw new BadRequest('cmd_set and cmd_id come together, and only for a command (is_ack false)');
+  }
+  const session = intArg(req, 'session', 31);
+  const seq = intArg(req, 'seq', 0xffff);
+  const value = Buffer.from(hexOfArg(req, 'value'), 'hex');
+  return { hex: hexOf(osdk.encodeFrame(cmdSet, cmdId, isAck, session, seq, value)) };
 }
 
 // Events of a stream: Deframer boundaries, Kaitai values, ACK matching.
@@ -112,15 +154,15 @@ class StreamDecoder {
   }
 
   event(ev) {
-    if (ev.type === 'garbage') return { offset: ev.offset, kind: 'garbage', length: ev.length };
-    if (ev.type === 'rejected') {
-      return { offset: ev.offset, kind: 'error', error: ev.error, detail: ev.detail, length: ev.length };
+    if (ev.kind === 'garbage') return { offset: ev.offset, kind: 'garbage', length: ev.length };
+    if (ev.kind === 'error') {
+      return { offset: ev.offset, kind: 'error', error: ev.errorClass, detail: ev.detail, length: ev.length };
     }
     try {
       return this.frame(ev);
     } catch (err) {
-      if (err instanceof Rejection) {
-        return { offset: ev.offset, kind: 'error', error: err.cls, detail: err.detail, length: ev.raw.length };
+      if (err instanceof osdk.OsdkError) {
+        return { offset: ev.offset, kind: 'error', error: err.errorClass, detail: err.message, length: ev.raw.length };
       }
       // Our bug must not cost the rest of the stream.
       return {
@@ -131,9 +173,9 @@ class StreamDecoder {
   }
 
   frame(ev) {
-    const f = parseFrame(ev.raw, this.profile);
+    const f = osdk.decodeFrame(ev.raw, this.profile);
     const out = { offset: ev.offset, kind: 'frame' };
-    if (f.len > HEADER_LEN && f.data instanceof OsdkFrame.FrameData) {
+    if (f.data instanceof osdk.OsdkFrame.FrameData) {
       const key = `${f.session}.${f.seq}`;
       if (f.isAck) {
         const cmd = this.pending.get(key);
@@ -142,15 +184,15 @@ class StreamDecoder {
           out.ack_of = commandName(cmd[0], cmd[1]);
           let ack;
           try {
-            ack = parsePayload(f.data.ackValue, cmd[0], cmd[1], true, this.profile);
+            ack = osdk.decodePayload(f.data.ackValue, cmd[0], cmd[1], true, this.profile);
           } catch (err) {
-            if (!(err instanceof Rejection)) throw err;
+            if (!(err instanceof osdk.OsdkError)) throw err;
             return {
-              offset: ev.offset, kind: 'error', error: err.cls, detail: err.detail,
+              offset: ev.offset, kind: 'error', error: err.errorClass, detail: err.message,
               length: ev.raw.length, ack_of: out.ack_of,
             };
           }
-          out.ack = this.models ? modelOf(ack, f.data.ackValue).body : ack.body;
+          out.ack = this.models ? modelOf(ack, f.data.ackValue) : ack;
         }
       } else if (f.session > 0) {
         this.pending.set(key, [f.data.cmdSet, f.data.cmdId]);
@@ -160,6 +202,18 @@ class StreamDecoder {
     out.frame = this.models ? modelOf(f, ev.raw) : f;
     return out;
   }
+}
+
+// `data` cut into reads of the given sizes; what they leave over is one last read.
+function splitChunks(data, sizes) {
+  const out = [];
+  let pos = 0;
+  for (const size of sizes) {
+    out.push(data.subarray(Math.min(pos, data.length), Math.min(pos + size, data.length)));
+    pos += size;
+  }
+  if (pos < data.length) out.push(data.subarray(pos));
+  return out;
 }
 
 function decodeStream(req, profile) {
@@ -178,7 +232,7 @@ function decodeStream(req, profile) {
 // decode_stream's events, one read after another, each handed to onEvent
 // (also the bench mode's loop).
 function eventStream(profile, models, onEvent) {
-  const deframer = new Deframer();
+  const deframer = new osdk.Deframer();
   const decoder = new StreamDecoder(profile, models);
   return {
     feed: (chunk) => { for (const ev of deframer.feed(chunk)) onEvent(decoder.event(ev)); },
@@ -194,19 +248,30 @@ const OPS = {
   check_movement_control: checkMovementControl,
 };
 
+// operations that take no profile
+const PLAIN_OPS = {
+  encode_movement_control: encodeMovementControl,
+  encode_frame: encodeFrame,
+};
+
 // The response to a request object with an "op" string. Throws BadRequest
 // for arguments it cannot use; anything else thrown is a bug of ours.
 function answer(req) {
   const { op } = req;
   if (op === 'capabilities') {
-    return { ok: true, result: { name: NAME, operations: Object.keys(OPS), profiles: PROFILES } };
+    return {
+      ok: true, result: { name: NAME, operations: [...Object.keys(OPS), ...Object.keys(PLAIN_OPS)], profiles: PROFILES },
+    };
   }
-  const fn = Object.prototype.hasOwnProperty.call(OPS, op) ? OPS[op] : null;
-  if (fn === null || !PROFILES.includes(req.profile)) return { ok: false, unsupported: true };
+  const own = (table) => (Object.prototype.hasOwnProperty.call(table, op) ? table[op] : null);
+  const plain = own(PLAIN_OPS);
+  const fn = own(OPS);
+  if (plain === null && (fn === null || !PROFILES.includes(req.profile))) return { ok: false, unsupported: true };
   try {
-    return { ok: true, result: fn(req, req.profile) };
+    return { ok: true, result: plain !== null ? plain(req) : fn(req, req.profile) };
   } catch (err) {
     if (err instanceof Rejection) return { ok: false, error: err.cls, detail: err.detail };
+    if (err instanceof osdk.OsdkError) return { ok: false, error: err.errorClass, detail: err.message };
     throw err;
   }
 }

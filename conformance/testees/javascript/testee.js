@@ -1,35 +1,14 @@
 #!/usr/bin/env node
 'use strict';
-// The bundled "js" testee: the Kaitai-generated JavaScript parsers
-// (generated/javascript, compiled from spec/*.ksy) behind the testee protocol
-// of conformance/PROTOCOL.md. `osdkc run --impl js`; build with `make build`.
+// The bundled "js" testee: the generated JavaScript library (generated/javascript:
+// the Kaitai parsers of spec/*.ksy and the tools/libgen glue) behind the
+// testee protocol of conformance/PROTOCOL.md. `osdkc run --impl js`; build with `make build`.
 //
-// Module resolution. The generated modules do require('kaitai-struct/KaitaiStream'),
-// which Node resolves from generated/javascript upwards, where there is no
-// node_modules, and generated code is never edited nor is anything put beside
-// it. The runtime lives in this directory's node_modules (npm ci). NODE_PATH
-// is Node's documented way to add a resolution root, but Node reads it only at
-// start-up; so when it does not name our node_modules yet, this script runs
-// itself once more with it set (sharing stdin/stdout/stderr) rather than
-// reaching into Node's private loader functions.
+// The library is the npm package osdk-kaitai (a file: dependency on
+// generated/javascript, installed by `make build`); it brings the Kaitai
+// runtime with it, so plain Node module resolution finds everything.
 
-const path = require('path');
-
-const RUNTIME = path.join(__dirname, 'node_modules');
-const nodePath = (process.env.NODE_PATH || '').split(path.delimiter).filter(Boolean);
-
-if (!nodePath.includes(RUNTIME)) {
-  const { spawnSync } = require('child_process');
-  const env = { ...process.env, NODE_PATH: [RUNTIME, ...nodePath].join(path.delimiter) };
-  const run = spawnSync(process.execPath, [...process.execArgv, __filename, ...process.argv.slice(2)],
-    { stdio: 'inherit', env });
-  if (run.error) {
-    process.stderr.write(`cannot start ${process.execPath}: ${run.error.message}\n`);
-    process.exit(1);
-  }
-  if (run.signal) process.kill(process.pid, run.signal);
-  process.exit(run.status === null ? 1 : run.status);
-} else if (process.argv.length > 2) {
+if (process.argv.length > 2) {
   process.exitCode = require('./bench').main(process.argv.slice(2)); // --bench FILE --profile P (bench.js)
 } else {
   serve();
@@ -39,9 +18,6 @@ if (!nodePath.includes(RUNTIME)) {
 // testee cannot use is answered bad_request, a bug of its own internal_error:
 // a failed case, never a dead testee (osdk_conformance/harness/serve.py).
 function serve() {
-  // The call-site walk that names a failed `valid` check needs the frames up
-  // to the generated _read; the default of 10 is enough today, this is slack.
-  Error.stackTraceLimit = 50;
   const readline = require('readline');
   const { BadRequest, answer } = require('./ops');
   const { dumps } = require('./model');

@@ -24,9 +24,9 @@
 
 #include "okit.h"
 #include "osdk_acks.h"
-#include "osdk_crc.h"
 #include "osdk_decoder.h"
 #include "osdk_deframer.h"
+#include "osdk_encode.h"
 #include "osdk_model_json.h"
 #include "osdk_tables.h"
 
@@ -537,30 +537,19 @@ static void hex_result(okit_request *req, const uint8_t *bytes, size_t n)
     osdk_json_end_object(w);
 }
 
-static void put_le(uint8_t *p, uint64_t v, unsigned n)
-{
-    unsigned i;
-    for (i = 0; i < n; i++) p[i] = (uint8_t)(v >> (8 * i));
-}
-
 static void op_encode_movement(okit_request *req)
 {
     static const char *const keys[4] = {"x", "y", "z", "yaw"};
     int64_t mode;
-    uint8_t out[17];
+    uint32_t bits[4];
+    uint8_t out[OSDK_MOVEMENT_CONTROL_SIZE];
     unsigned i;
-    if (!okit_int(req, "mode", 0, 255, &mode)) {
-        return;
-    }
-    out[0] = (uint8_t)mode;
+    if (!okit_int(req, "mode", 0, 255, &mode)) return;
     for (i = 0; i < 4; i++) {
-        uint32_t bits;
-        if (!okit_f32(req, keys[i], &bits)) {
-                return;
-        }
-        put_le(out + 1 + 4 * i, bits, 4);
+        if (!okit_f32(req, keys[i], &bits[i])) return;
     }
-    hex_result(req, out, sizeof out);
+    /* the bits variant: a signalling NaN's payload goes out as it came */
+    hex_result(req, out, osdk_encode_movement_control_bits((uint8_t)mode, bits[0], bits[1], bits[2], bits[3], out));
 }
 
 static void op_encode_frame(okit_request *req)
@@ -568,9 +557,9 @@ static void op_encode_frame(okit_request *req)
     bool is_ack;
     int64_t session, seq, cmd_set = 0, cmd_id = 0;
     uint8_t *value = NULL;
-    size_t vlen = 0, data_len, frame_len, at;
-    uint8_t frame[OSDK_FRAME_MAX_LEN];
-    char detail[160];
+    size_t vlen = 0, written = 0;
+    uint8_t frame[OSDK_ENCODE_FRAME_MAX_LEN];
+    osdk_encode_status_t st;
     if (!okit_bool(req, "is_ack", &is_ack) || !okit_int(req, "session", 0, 31, &session) ||
         !okit_int(req, "seq", 0, 0xFFFF, &seq) || !okit_hex(req, "value", &value, &vlen)) {
         free(value);
@@ -586,40 +575,18 @@ static void op_encode_frame(okit_request *req)
         free(value);
         return;
     }
-    data_len = vlen + (is_ack ? 0u : 2u);
-    if (data_len && (data_len > OSDK_FRAME_MAX_LEN || OSDK_FRAME_HEADER_LEN + data_len + 4u > OSDK_FRAME_MAX_LEN)) {
-        snprintf(detail, sizeof detail, "%lu bytes of DATA do not fit a frame of at most %u bytes",
-                 (unsigned long)data_len, (unsigned)OSDK_FRAME_MAX_LEN);
-        free(value);
-        okit_error(req, "impossible_length", detail);
-        return;
-    }
-    if (is_ack && session == 0) {
-        free(value);
-        okit_error(req, "bad_session", "an ACK frame cannot be in session 0");
-        return;
-    }
-    frame_len = data_len ? OSDK_FRAME_HEADER_LEN + data_len + 4u : OSDK_FRAME_HEADER_LEN;
-    memset(frame, 0, sizeof frame);
-    frame[0] = OSDK_FRAME_SOF;
-    put_le(frame + 1, frame_len, 2);          /* LEN (10 bits), VER 0 */
-    frame[3] = (uint8_t)(session | (is_ack ? 0x20 : 0)); /* SESSION, ACK, RES0 0 */
-    frame[4] = 0;                             /* PADDING 0, ENC plain */
-    put_le(frame + 8, (uint64_t)seq, 2);
-    put_le(frame + 10, osdk_crc16(frame, 10), 2);
-    at = OSDK_FRAME_HEADER_LEN;
-    if (!is_ack) {
-        frame[at++] = (uint8_t)cmd_set;
-        frame[at++] = (uint8_t)cmd_id;
-    }
-    if (vlen) memcpy(frame + at, value, vlen);
-    at += vlen;
-    if (data_len) {
-        put_le(frame + at, osdk_crc32(frame, at), 4);
-        at += 4;
-    }
+    st = osdk_encode_frame((uint8_t)cmd_set, (uint8_t)cmd_id, is_ack, (uint8_t)session, (uint16_t)seq, value, vlen,
+                           frame, sizeof frame, &written);
     free(value);
-    hex_result(req, frame, at);
+    if (st == OSDK_ENCODE_OK) {
+        hex_result(req, frame, written);
+    } else if (st == OSDK_ENCODE_IMPOSSIBLE_LENGTH) {
+        okit_error(req, osdk_encode_status_name(st), "the frame would be longer than its 10-bit LEN can say");
+    } else if (st == OSDK_ENCODE_BAD_SESSION) {
+        okit_error(req, osdk_encode_status_name(st), "an ACK frame cannot be in session 0");
+    } else {
+        okit_error(req, "internal_error", osdk_encode_status_name(st));
+    }
 }
 
 /* ---- the testee ------------------------------------------------------------------------------------------ */

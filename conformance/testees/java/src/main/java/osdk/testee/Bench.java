@@ -98,7 +98,7 @@ final class Bench {
             stream.finish();
             end = System.nanoTime();
         } catch (IOException e) {
-            throw new Failure("cannot read " + path + ": " + Kaitai.oneLine(e.getMessage()));
+            throw new Failure("cannot read " + path + ": " + Main.oneLine(e.getMessage()));
         }
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("profile", profile);

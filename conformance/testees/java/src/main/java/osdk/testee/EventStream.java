@@ -2,9 +2,10 @@ package osdk.testee;
 
 import java.util.Map;
 import java.util.function.Consumer;
+import osdk_kaitai.Deframer;
 
 /**
- * The loop of decode_stream: each read through the Deframer and the
+ * The loop of decode_stream: each read through the library's Deframer and the
  * StreamDecoder, each event to a consumer. The bench mode runs the same
  * loop without value models.
  */
@@ -20,7 +21,7 @@ final class EventStream {
 
     /** The first n bytes of chunk (not kept). */
     void feed(byte[] chunk, int n) {
-        for (Deframer.Event ev : deframer.feed(chunk, n)) {
+        for (Deframer.Event ev : deframer.feed(chunk, 0, n)) {
             onEvent.accept(decoder.event(ev));
         }
     }

@@ -59,11 +59,15 @@ public final class Main {
         }
     }
 
+    static String oneLine(String s) {
+        return s == null ? "" : s.replaceAll("\\s+", " ").trim();
+    }
+
     private static Map<String, Object> failure(String cls, Throwable e) {
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("ok", false);
         out.put("error", cls);
-        out.put("detail", e.getClass().getSimpleName() + ": " + Kaitai.oneLine(e.getMessage()));
+        out.put("detail", e.getClass().getSimpleName() + ": " + oneLine(e.getMessage()));
         return out;
     }
 }

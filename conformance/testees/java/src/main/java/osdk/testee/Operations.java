@@ -2,26 +2,34 @@ package osdk.testee;
 
 import java.math.BigInteger;
 import java.util.ArrayList;
+import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.regex.Pattern;
+import io.kaitai.struct.ByteBufferKaitaiStream;
+import io.kaitai.struct.KaitaiStruct;
+import osdk_kaitai.Osdk;
 import osdk_kaitai.OsdkControlMode;
-import osdk_kaitai.OsdkFrame;
+import osdk_kaitai.OsdkException;
 import osdk_kaitai.OsdkMovementControl;
-import osdk_kaitai.OsdkPayload;
 
 /**
- * The operations of conformance/PROTOCOL.md over the generated parsers, as
+ * The operations of conformance/PROTOCOL.md over the generated library
+ * (osdk_kaitai: decodeFrame, decodePayload, the Deframer, the encoders), as
  * conformance/testees/kaitai_python_testee.py does them.
  */
 final class Operations {
     static final String NAME = "osdk-kaitai-java";
     static final List<String> OPERATIONS = List.of(
-            "decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control");
+            "decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
+            "encode_movement_control", "encode_frame");
+    // their requests carry no profile
+    private static final List<String> NO_PROFILE = List.of("encode_movement_control", "encode_frame");
 
     private static final Tables T = Tables.INSTANCE;
     private static final Pattern HEX = Pattern.compile("(?:[0-9a-fA-F]{2})*");
+    private static final Pattern F32 = Pattern.compile("0x[0-9a-fA-F]{8}");
     // setpoint -> the range it is checked against, in the order the reference checks them
     private static final String[][] AXES = {{"x", "horizontal"}, {"y", "horizontal"}, {"z", "vertical"}, {"yaw", "yaw"}};
 
@@ -38,8 +46,9 @@ final class Operations {
             caps.put("profiles", T.profiles);
             return ok(caps);
         }
-        Object profile = req.get("profile");
-        if (!OPERATIONS.contains(op) || !(profile instanceof String) || !T.profiles.contains(profile)) {
+        Object profile = NO_PROFILE.contains(op) ? "" : req.get("profile");
+        if (!OPERATIONS.contains(op) || !(profile instanceof String)
+                || !(NO_PROFILE.contains(op) || T.profiles.contains(profile))) {
             Map<String, Object> out = new LinkedHashMap<>();
             out.put("ok", false);
             out.put("unsupported", true);
@@ -56,14 +65,18 @@ final class Operations {
                     return ok(decodePayload(req, p));
                 case "classify_control_mode":
                     return ok(classify(req, p));
+                case "encode_movement_control":
+                    return ok(encodeMovementControl(req));
+                case "encode_frame":
+                    return ok(encodeFrame(req));
                 default:
                     return ok(checkMovementControl(req, p));
             }
-        } catch (Rejection r) {
+        } catch (OsdkException r) {
             Map<String, Object> out = new LinkedHashMap<>();
             out.put("ok", false);
-            out.put("error", r.cls);
-            out.put("detail", r.detail);
+            out.put("error", r.errorClass());
+            out.put("detail", r.detail());
             return out;
         }
     }
@@ -75,47 +88,28 @@ final class Operations {
         return out;
     }
 
-    // ---- the generated parsers -------------------------------------------------------------
-
-    static OsdkPayload.Profile profile(String name) {
-        Long value = T.profileValues.get(name);
-        OsdkPayload.Profile p = value == null ? null : OsdkPayload.Profile.byId(value);
-        if (p == null) {
-            throw new IllegalStateException("profile " + name + " has no value of the enum osdk_payload.profile");
-        }
-        return p;
-    }
-
-    static OsdkFrame frame(byte[] raw, String profile) throws Rejection {
-        return Kaitai.parse(io -> new OsdkFrame(io, profile(profile)), raw);
-    }
-
-    static OsdkPayload payload(byte[] data, int cmdSet, int cmdId, boolean isAck, String profile) throws Rejection {
-        return Kaitai.parse(io -> new OsdkPayload(io, cmdSet, cmdId, isAck, profile(profile)), data);
-    }
-
-    /** The model of osdk_payload's body. */
-    static Object bodyModel(OsdkPayload p, byte[] data) {
-        return ValueModel.of(p, data).get("body");
+    /** The model of osdk_payload's body (decodePayload's result), parsed from the whole of data. */
+    static Object bodyModel(KaitaiStruct body, byte[] data) {
+        return ValueModel.of(body, data);
     }
 
     // ---- operations --------------------------------------------------------------------------
 
-    private static Map<String, Object> decodePayload(Map<String, Object> req, String profile) throws Rejection {
+    private static Map<String, Object> decodePayload(Map<String, Object> req, String profile) {
         byte[] data = hexArg(req);
         int cmdSet = byteArg(req, "cmd_set");
         int cmdId = byteArg(req, "cmd_id");
         boolean isAck = boolArg(req, "is_ack");
-        OsdkPayload p = payload(data, cmdSet, cmdId, isAck, profile);
+        KaitaiStruct body = Osdk.decodePayload(data, cmdSet, cmdId, isAck, profile);
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("value", bodyModel(p, data));
+        out.put("value", bodyModel(body, data));
         return out;
     }
 
-    private static Map<String, Object> classify(Map<String, Object> req, String profile) throws Rejection {
+    private static Map<String, Object> classify(Map<String, Object> req, String profile) {
         int b = byteArg(req, "byte");
         byte[] data = {(byte) b};
-        OsdkControlMode mode = Kaitai.parse(OsdkControlMode::new, data);
+        OsdkControlMode mode = new OsdkControlMode(new ByteBufferKaitaiStream(data)); // one byte always parses
         Tables.Mode c = T.mode(profile, b);
         Map<String, Object> out = new LinkedHashMap<>();
         out.put("fields", ValueModel.of(mode, data));
@@ -124,16 +118,15 @@ final class Operations {
         return out;
     }
 
-    private static Map<String, Object> checkMovementControl(Map<String, Object> req, String profile) throws Rejection {
+    private static Map<String, Object> checkMovementControl(Map<String, Object> req, String profile) {
         byte[] data = hexArg(req);
         // As a command value, so that bytes left over are length_mismatch as in a frame.
-        OsdkPayload p = payload(data, 0x01, 0x03, false, profile);
-        OsdkMovementControl body = (OsdkMovementControl) p.body();
-        Object value = bodyModel(p, data);
+        OsdkMovementControl body = (OsdkMovementControl) Osdk.decodePayload(data, 0x01, 0x03, false, profile);
+        Object value = bodyModel(body, data);
         int modeByte = data[0] & 0xFF;
         Tables.Mode c = T.mode(profile, modeByte);
         if (!c.classification.equals("documented")) {
-            throw new Rejection("undefined_mode",
+            throw new OsdkException("undefined_mode", "control_mode",
                     String.format("mode byte 0x%02x is %s on %s", modeByte, c.classification, profile));
         }
         double[] setpoints = {body.x(), body.y(), body.z(), body.yaw()};
@@ -141,7 +134,7 @@ final class Operations {
             double v = setpoints[i];
             Tables.Range r = T.range(profile, c.combination, AXES[i][1]);
             if (Double.isNaN(v) || Double.isInfinite(v) || (r.min != null && v < r.min) || (r.max != null && v > r.max)) {
-                throw new Rejection("out_of_range", AXES[i][0] + " = " + v + " outside the " + AXES[i][1] + " range "
+                throw new OsdkException("out_of_range", AXES[i][0], AXES[i][0] + " = " + v + " outside the " + AXES[i][1] + " range "
                         + r.min + ".." + r.max);
             }
         }
@@ -151,34 +144,37 @@ final class Operations {
         return out;
     }
 
-    private static Map<String, Object> decodeFrame(Map<String, Object> req, String profile) throws Rejection {
+    private static Map<String, Object> decodeFrame(Map<String, Object> req, String profile) {
         byte[] data = hexArg(req);
-        // The receiver's checks, in the order a receiver meets them.
-        if (data.length == 0) {
-            throw new Rejection("truncated_frame", "no bytes");
-        }
-        if ((data[0] & 0xFF) != Deframer.SOF) {
-            throw new Rejection("bad_sof", String.format("first byte 0x%02x is not the start byte", data[0] & 0xFF));
-        }
-        if (data.length < Deframer.HEADER_LEN) {
-            throw new Rejection("truncated_frame", data.length + " bytes, less than a header");
-        }
-        Rejection problem = Deframer.headerProblem(data, 0);
-        if (problem != null) {
-            throw problem;
-        }
-        int length = Deframer.frameLength(data, 0);
-        if (data.length < length) {
-            throw new Rejection("truncated_frame", data.length + " bytes of a frame of LEN " + length);
-        }
-        if (data.length > length) {
-            throw new Rejection("length_mismatch", data.length + " bytes for LEN " + length);
-        }
-        if (Deframer.crc32Fails(data, 0, length)) {
-            throw new Rejection("bad_crc32", "CRC-32 does not match");
-        }
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("frame", ValueModel.of(frame(data, profile), data));
+        out.put("frame", ValueModel.of(Osdk.decodeFrame(data, profile), data));
+        return out;
+    }
+
+    private static Map<String, Object> encodeMovementControl(Map<String, Object> req) {
+        int mode = byteArg(req, "mode");
+        byte[] value = Osdk.encodeMovementControlBits(mode, f32Arg(req, "x"), f32Arg(req, "y"), f32Arg(req, "z"),
+                f32Arg(req, "yaw"));
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("hex", HexFormat.of().formatHex(value));
+        return out;
+    }
+
+    private static Map<String, Object> encodeFrame(Map<String, Object> req) {
+        boolean isAck = boolArg(req, "is_ack");
+        int cmdSet = 0;
+        int cmdId = 0;
+        if (!isAck) {
+            cmdSet = byteArg(req, "cmd_set");
+            cmdId = byteArg(req, "cmd_id");
+        } else if (req.containsKey("cmd_set") || req.containsKey("cmd_id")) {
+            throw new BadRequest("an ACK has no cmd_set or cmd_id");
+        }
+        int session = intArg(req, "session", 31);
+        int seq = intArg(req, "seq", 0xFFFF);
+        byte[] value = hexArg(req, "value");
+        Map<String, Object> out = new LinkedHashMap<>();
+        out.put("hex", HexFormat.of().formatHex(Osdk.encodeFrame(cmdSet, cmdId, isAck, session, seq, value)));
         return out;
     }
 
@@ -187,7 +183,7 @@ final class Operations {
         List<Long> sizes = chunksArg(req);
         List<Object> events = new ArrayList<>();
         EventStream stream = new EventStream(profile, true, events::add);
-        for (byte[] chunk : Deframer.splitChunks(data, sizes)) {
+        for (byte[] chunk : splitChunks(data, sizes)) {
             stream.feed(chunk, chunk.length);
         }
         stream.finish();
@@ -206,9 +202,13 @@ final class Operations {
     }
 
     private static byte[] hexArg(Map<String, Object> req) {
-        Object v = arg(req, "hex");
+        return hexArg(req, "hex");
+    }
+
+    private static byte[] hexArg(Map<String, Object> req, String key) {
+        Object v = arg(req, key);
         if (!(v instanceof String) || !HEX.matcher((String) v).matches()) {
-            throw new BadRequest("argument 'hex' is not a hex string of whole bytes");
+            throw new BadRequest("argument '" + key + "' is not a hex string of whole bytes");
         }
         String s = (String) v;
         byte[] out = new byte[s.length() / 2];
@@ -219,14 +219,28 @@ final class Operations {
     }
 
     private static int byteArg(Map<String, Object> req, String key) {
+        return intArg(req, key, 0xFF);
+    }
+
+    private static int intArg(Map<String, Object> req, String key, int max) {
         Object v = arg(req, key);
         if (!(v instanceof Long) && !(v instanceof BigInteger)) {
             throw new BadRequest("argument '" + key + "' must be an integer");
         }
-        if (!(v instanceof Long) || (Long) v < 0 || (Long) v > 0xFF) {
-            throw new BadRequest("argument '" + key + "' must be 0..255");
+        if (!(v instanceof Long) || (Long) v < 0 || (Long) v > max) {
+            throw new BadRequest("argument '" + key + "' must be 0.." + max);
         }
         return (int) (long) (Long) v;
+    }
+
+    /** A float argument {"f32": "0x..."}: its IEEE bits, so that every NaN payload survives. */
+    private static int f32Arg(Map<String, Object> req, String key) {
+        Object v = arg(req, key);
+        Object bits = v instanceof Map ? ((Map<?, ?>) v).get("f32") : null;
+        if (!(bits instanceof String) || !F32.matcher((String) bits).matches()) {
+            throw new BadRequest("argument '" + key + "' must be {\"f32\": \"0x<8 hex digits>\"}");
+        }
+        return (int) Long.parseLong(((String) bits).substring(2), 16);
     }
 
     private static boolean boolArg(Map<String, Object> req, String key) {
@@ -251,6 +265,23 @@ final class Operations {
             } else {
                 throw new BadRequest("argument 'chunks' must be a list of non-negative integers");
             }
+        }
+        return out;
+    }
+
+    /** data cut into reads of the given sizes; what they leave over is one last read. */
+    static List<byte[]> splitChunks(byte[] data, List<Long> sizes) {
+        List<byte[]> out = new ArrayList<>();
+        int pos = 0;
+        for (long size : sizes) {
+            int n = (int) Math.min(size, data.length); // a longer read takes no more than all
+            int from = Math.min(pos, data.length);
+            int to = (int) Math.min((long) pos + n, data.length);
+            out.add(java.util.Arrays.copyOfRange(data, from, to));
+            pos = (int) Math.min((long) pos + n, data.length);
+        }
+        if (pos < data.length) {
+            out.add(java.util.Arrays.copyOfRange(data, pos, data.length));
         }
         return out;
     }

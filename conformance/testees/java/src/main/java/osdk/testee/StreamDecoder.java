@@ -3,12 +3,15 @@ package osdk.testee;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import io.kaitai.struct.KaitaiStruct;
+import osdk_kaitai.Deframer;
+import osdk_kaitai.Osdk;
+import osdk_kaitai.OsdkException;
 import osdk_kaitai.OsdkFrame;
-import osdk_kaitai.OsdkPayload;
 
 /**
- * The events of one decode_stream: Deframer boundaries, values from the
- * generated parsers, and ACK matching. An ACK's value is typed by the
+ * The events of one decode_stream: the library's Deframer and decodeFrame /
+ * decodePayload, and ACK matching. An ACK's value is typed by the
  * command with the same session and SEQ seen earlier in the stream; at most
  * PENDING_LIMIT unanswered commands are remembered, the oldest forgotten
  * first. Without models, values stay as the parsers returned them (the
@@ -29,50 +32,50 @@ final class StreamDecoder {
 
     Map<String, Object> event(Deframer.Event ev) {
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("offset", ev.offset);
-        switch (ev.kind) {
+        out.put("offset", ev.offset());
+        switch (ev.kind()) {
             case GARBAGE:
                 out.put("kind", "garbage");
-                out.put("length", (long) ev.length);
+                out.put("length", (long) ev.length());
                 return out;
-            case REJECTED:
-                return error(ev, ev.error, ev.detail);
+            case ERROR:
+                return error(ev, ev.errorClass(), ev.detail());
             default:
                 try {
                     return frame(ev);
-                } catch (Rejection r) {
-                    return error(ev, r.cls, r.detail);
+                } catch (OsdkException r) {
+                    return error(ev, r.errorClass(), r.detail());
                 } catch (RuntimeException e) { // our bug must not cost the rest of the stream
                     return error(ev, "undecodable", "internal error (" + e.getClass().getSimpleName() + ": "
-                            + Kaitai.oneLine(e.getMessage()) + ")");
+                            + Main.oneLine(e.getMessage()) + ")");
                 }
         }
     }
 
-    private Map<String, Object> frame(Deframer.Event ev) throws Rejection {
-        OsdkFrame f = Operations.frame(ev.raw, profile);
-        Map<String, Object> model = models ? ValueModel.of(f, ev.raw) : null;
+    private Map<String, Object> frame(Deframer.Event ev) {
+        OsdkFrame f = Osdk.decodeFrame(ev.raw(), profile);
+        Map<String, Object> model = models ? ValueModel.of(f, ev.raw()) : null;
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("offset", ev.offset);
+        out.put("offset", ev.offset());
         out.put("kind", "frame");
-        if (f.len() > Deframer.HEADER_LEN && f.data() instanceof OsdkFrame.FrameData) {
-            OsdkFrame.FrameData data = (OsdkFrame.FrameData) f.data();
+        OsdkFrame.FrameData data = Osdk.frameData(f);
+        if (data != null) {
             long key = f.session() << 16 | f.seq();
             if (f.isAck()) {
                 int[] cmd = pending.remove(key);
                 if (cmd != null) {
-                    String ackOf = Tables.INSTANCE.commandName(cmd[0], cmd[1]);
+                    String ackOf = Osdk.commandName(cmd[0], cmd[1]);
                     out.put("ack_of", ackOf);
                     byte[] value = data.ackValue();
-                    OsdkPayload ack;
+                    KaitaiStruct ack;
                     try {
-                        ack = Operations.payload(value, cmd[0], cmd[1], true, profile);
-                    } catch (Rejection r) {
-                        Map<String, Object> err = error(ev, r.cls, r.detail);
+                        ack = Osdk.decodePayload(value, cmd[0], cmd[1], true, profile);
+                    } catch (OsdkException r) {
+                        Map<String, Object> err = error(ev, r.errorClass(), r.detail());
                         err.put("ack_of", ackOf);
                         return err;
                     }
-                    out.put("ack", models ? Operations.bodyModel(ack, value) : ack.body());
+                    out.put("ack", models ? ValueModel.of(ack, value) : ack);
                 }
             } else if (f.session() > 0) {
                 // cmd_set_code: the number, also for a command set the spec has no name for
@@ -90,11 +93,11 @@ final class StreamDecoder {
 
     private static Map<String, Object> error(Deframer.Event ev, String cls, String detail) {
         Map<String, Object> out = new LinkedHashMap<>();
-        out.put("offset", ev.offset);
+        out.put("offset", ev.offset());
         out.put("kind", "error");
         out.put("error", cls);
         out.put("detail", detail);
-        out.put("length", (long) ev.length);
+        out.put("length", (long) ev.length());
         return out;
     }
 }

@@ -11,7 +11,7 @@ import java.util.Map;
 
 /**
  * generated/tables/osdk_tables.json (bundled in the jar): what the testee
- * needs besides the parser. Read once; every accessor is a plain lookup.
+ * needs besides the library (the value model, control mode classes and ranges). Read once; every accessor is a plain lookup.
  */
 final class Tables {
     static final Tables INSTANCE = load();
@@ -56,26 +56,6 @@ final class Tables {
         }
     }
 
-    static final class CrcParams {
-        final int width;
-        final long poly;
-        final long init;
-        final boolean reflectIn;
-        final boolean reflectOut;
-        final long xorout;
-        final long check;
-
-        CrcParams(Map<String, Object> m) {
-            width = intOr(m.get("width"), 0);
-            poly = ((Number) m.get("poly")).longValue();
-            init = ((Number) m.get("init")).longValue();
-            reflectIn = (Boolean) m.get("reflect_in");
-            reflectOut = (Boolean) m.get("reflect_out");
-            xorout = ((Number) m.get("xorout")).longValue();
-            check = ((Number) m.get("check")).longValue();
-        }
-    }
-
     /** Classification of one control mode byte on one profile. */
     static final class Mode {
         final String classification;
@@ -100,12 +80,6 @@ final class Tables {
     }
 
     final List<String> profiles;
-    /** Profile id -> its value in the ksy enum `profile`, what the generated parsers take. */
-    final Map<String, Long> profileValues = new HashMap<>();
-    final CrcParams crc16;
-    final CrcParams crc32;
-    final Map<String, String> errorByField;
-    private final Map<Integer, String> commands = new HashMap<>();
     private final Map<String, Type> typesByClass = new HashMap<>();
     private final Map<String, Map<Long, String>> enums = new HashMap<>();
     private final Map<String, List<Mode>> modes = new HashMap<>();
@@ -114,17 +88,6 @@ final class Tables {
     @SuppressWarnings("unchecked")
     private Tables(Map<String, Object> root) {
         profiles = Collections.unmodifiableList((List<String>) (List<?>) root.get("profiles"));
-        for (Map.Entry<String, Object> e : ((Map<String, Object>) root.get("profile_values")).entrySet()) {
-            profileValues.put(e.getKey(), ((Number) e.getValue()).longValue());
-        }
-        Map<String, Object> crc = (Map<String, Object>) root.get("crc");
-        crc16 = new CrcParams((Map<String, Object>) crc.get("crc16"));
-        crc32 = new CrcParams((Map<String, Object>) crc.get("crc32"));
-        errorByField = (Map<String, String>) (Map<?, ?>) root.get("error_by_field");
-        for (Object o : (List<?>) root.get("commands")) {
-            Map<String, Object> c = (Map<String, Object>) o;
-            commands.put(commandKey(intOr(c.get("cmd_set"), -1), intOr(c.get("cmd_id"), -1)), (String) c.get("name"));
-        }
         Map<String, Object> model = (Map<String, Object>) root.get("model");
         Map<String, Object> ifs = (Map<String, Object>) root.get("if_expressions");
         for (Map.Entry<String, Object> e : ((Map<String, Object>) model.get("types")).entrySet()) {
@@ -196,20 +159,12 @@ final class Tables {
         return names.get(value);
     }
 
-    String commandName(int cmdSet, int cmdId) {
-        return commands.getOrDefault(commandKey(cmdSet, cmdId), "unknown");
-    }
-
     Mode mode(String profile, int modeByte) {
         return modes.get(profile).get(modeByte);
     }
 
     Range range(String profile, long combination, String axis) {
         return ranges.get(profile).get(Long.toString(combination)).get(axis);
-    }
-
-    private static int commandKey(int cmdSet, int cmdId) {
-        return cmdSet << 8 | cmdId;
     }
 
     private static int intOr(Object v, int fallback) {
