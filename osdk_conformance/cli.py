@@ -65,6 +65,10 @@ COMMANDS = (
             "device.soak", "run_soak"),
     Command(("sdk", "host-test"), "build DJI's host stack with our driver, run a whole session "
                                   "against osdkc sim for each profile", "sdk.host", "run_host_test"),
+    Command(("sdk", "build"), "build a testee of DJI's own frame layer, broadcast unpacker and encoder "
+                              "(prints the testee command last)", "sdk.testee_build", "run_build"),
+    Command(("sdk", "test"), "build DJI's SDK as a testee, plain and with ASan/UBSan, and run the vectors "
+                             "against both", "sdk.sdk_test", "run_sdk_test"),
     Command(("bench",), "benchmarks: decode speed against an SDK-style C baseline, run, fuzz, soak, device fuzzing",
             "bench.command", "run_bench"),
     Command(("wireshark", "install"), "copy the Wireshark dissector into your personal Lua plugin folder",

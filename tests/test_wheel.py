@@ -128,6 +128,19 @@ def test_a_testee_in_another_language_needs_the_checkout(installed) -> None:
     assert proc.returncode == 2 and "needs a checkout" in proc.stderr and "Traceback" not in proc.stderr
 
 
+def test_the_sdk_testee_sources_are_in_the_package(installed) -> None:
+    # osdkc sdk build compiles them against the user's DJI checkout
+    exe, env, work = installed
+    check = ("from osdk_conformance.sdk import testee_build as t\n"
+             "from osdk_conformance.sdk.families import core, protocol\n"
+             "need = [*t.KIT_SOURCES, core.ADAPTER_DIR / 'adapter.cpp', protocol.ADAPTER_DIR / 'adapter.cpp']\n"
+             "print(sorted(str(p) for p in need if not p.is_file()))")
+    assert ok(run([exe.parent / "python", "-c", check], cwd=work, env=env)).strip() == "[]"
+    (work / "empty").mkdir(exist_ok=True)
+    proc = osdkc(installed, "sdk", "build", "--osdk", str(work / "empty"))
+    assert proc.returncode == 2 and "not a DJI Onboard-SDK checkout" in proc.stderr and "Traceback" not in proc.stderr
+
+
 def test_the_wireshark_dissector_installs_from_the_package(installed) -> None:
     target = installed[2] / "plugins"
     out = ok(osdkc(installed, "wireshark", "install", "--dir", str(target)))
