@@ -51,7 +51,7 @@ from osdk_conformance.core.paths import CHECKOUT, REPORTS, ROOT, needs_checkout
 from osdk_conformance.harness import report, response_schema, vectors
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, STATUSES, XFAIL, XPASS, Result
 from osdk_conformance.reference import accel
-from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
+from osdk_conformance.harness.testee import DEFAULT_MAX_RESTARTS, DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
 
 TESTEES = ROOT / "conformance" / "testees"
 
@@ -582,13 +582,13 @@ def _print_failures(results: Sequence[Result], out: TextIO, limit: int = 30) -> 
         out.write(f"  … and {len(bad) - limit} more (see --junit / --html reports)\n")
 
 
-def _replay(argv: list[str], cases: list, compare, timeout: float, memory_mb: int,
-            progress: Progress) -> tuple[RunOutcome, list[str]]:
+def replay(argv: list[str], cases: Sequence[Any], compare, timeout: float, memory_mb: int,
+           progress: Progress | None, max_restarts: int = DEFAULT_MAX_RESTARTS) -> tuple[RunOutcome, list[str]]:
     """Start the testee and run the cases; SIGINT or SIGTERM end the run early
     (recorded in the outcome) and the testee's process group is killed
     whatever happens. Returns the outcome and the testee's argv."""
     try:
-        testee = Testee(argv, timeout=timeout, memory_mb=memory_mb)
+        testee = Testee(argv, timeout=timeout, memory_mb=memory_mb, max_restarts=max_restarts)
     except TesteeStartError as e:
         raise UsageError(str(e)) from None
     outcome: RunOutcome | None = None
@@ -630,7 +630,7 @@ def run_command(args: argparse.Namespace) -> int:
     timeout = args.timeout if args.timeout is not None else DEFAULT_TIMEOUT
     memory_mb = args.memory_mb if args.memory_mb is not None else DEFAULT_MEMORY_MB
     progress = Progress(len(cases), None if args.no_progress else sys.stderr)
-    outcome, testee_argv = _replay(argv, cases, compare, timeout, memory_mb, progress)
+    outcome, testee_argv = replay(argv, cases, compare, timeout, memory_mb, progress)
 
     list_name = str(args.failure_list) if args.failure_list else "failure list"
     results = apply_failure_list(outcome.results, listed, known_ids, list_name)

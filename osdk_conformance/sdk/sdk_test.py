@@ -37,13 +37,12 @@ from typing import Any, Sequence
 
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import positive_float
-from osdk_conformance.harness import report, vectors
+from osdk_conformance.harness import report, runner, vectors
 from osdk_conformance.harness.report import FAIL, Result
-from osdk_conformance.harness.runner import (EXIT_NOTHING_RAN, Interrupted, Progress, RunOutcome, SignalStop,
-                                             coverage, coverage_html, coverage_table, no_result_reason,
-                                             request_of, run_cases, select_cases, verdict_of)
-from osdk_conformance.harness.testee import (DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, TESTEE_CRASH, TESTEE_OOM, Testee,
-                                             TesteeStartError)
+from osdk_conformance.harness.runner import (EXIT_NOTHING_RAN, Progress, RunOutcome, coverage, coverage_html,
+                                             coverage_table, no_result_reason, request_of, select_cases,
+                                             verdict_of)
+from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, TESTEE_CRASH, TESTEE_OOM
 from osdk_conformance.sdk.family import Recipe
 from osdk_conformance.sdk.testee_build import Built, add_osdk_arguments, build, describe, recipe_of
 
@@ -177,28 +176,9 @@ class VariantRun:
 def replay(built: Built, cases: Sequence[Any], compare, timeout: float, progress: Progress | None) -> RunOutcome:
     """`osdkc run --testee` for one variant: the same supervisor and run loop;
     the sanitizer variant runs without an address-space limit (ASan reserves
-    terabytes of it)."""
+    terabytes of it), and a crashing SDK is restarted as often as it takes."""
     memory_mb = 0 if built.asan else DEFAULT_MEMORY_MB
-    try:
-        testee = Testee([str(built.exe)], timeout=timeout, memory_mb=memory_mb, max_restarts=MAX_RESTARTS)
-    except TesteeStartError as e:
-        raise UsageError(str(e)) from None
-    outcome: RunOutcome | None = None
-    with SignalStop() as stop:
-        try:
-            try:
-                testee.start()
-            except TesteeStartError as e:
-                raise UsageError(str(e)) from None
-            outcome = run_cases(testee, cases, compare, progress)
-        except Interrupted as i:
-            outcome = outcome or RunOutcome([], None, None, 0.0, "", i.signame)
-        finally:
-            stop.disarm()
-            testee.close()
-        if outcome.interrupted is None and stop.received:
-            outcome.interrupted = stop.received
-    return outcome
+    return runner.replay([str(built.exe)], cases, compare, timeout, memory_mb, progress, MAX_RESTARTS)[0]
 
 
 def _overclaimed(recipe: Recipe, outcome: RunOutcome) -> list[str]:
