@@ -41,14 +41,6 @@ FAMILIES: tuple[str | ModuleType, ...] = ("core", "protocol")
 """The family modules under osdk_conformance/sdk/families/, tried in order (a
 test may put a module object here)."""
 
-# What a tree must have for a family to look at it, when the family module
-# does not say itself (its MARKERS): only for the message about a tree that
-# no family recognises.
-DEFAULT_MARKERS = {
-    "core": ("lib/inc/DJI_Version.h", "osdk-core/inc/DJI_Version.h"),
-    "protocol": ("osdk-core/protocol/inc/dji_open_protocol.hpp",),
-}
-
 KIT = ROOT / "conformance" / "testee-kit" / "c"
 GENERATED_C = ROOT / "generated" / "c"
 KIT_SOURCES = (KIT / "okit.c", KIT / "jsonread.c", GENERATED_C / "osdk_json.c")
@@ -89,23 +81,8 @@ __attribute__((weak)) const char *__ubsan_default_options(void)
 # Which family the tree belongs to
 
 
-def _family_module(entry: str | ModuleType) -> ModuleType | None:
-    if not isinstance(entry, str):
-        return entry
-    name = f"{__package__}.families.{entry}"
-    try:
-        return importlib.import_module(name)
-    except ModuleNotFoundError as e:
-        if e.name == name:   # that family is not written yet; any other missing module is a real error
-            return None
-        raise
-
-
-def _markers(entry: str | ModuleType, module: ModuleType | None) -> tuple[str, ...]:
-    marks = getattr(module, "MARKERS", None)
-    if marks:
-        return tuple(marks)
-    return DEFAULT_MARKERS.get(entry if isinstance(entry, str) else getattr(entry, "__name__", ""), ())
+def _family_module(entry: str | ModuleType) -> ModuleType:
+    return entry if isinstance(entry, ModuleType) else importlib.import_module(f"{__package__}.families.{entry}")
 
 
 def detect(root: Path, families: Sequence[str | ModuleType] | None = None) -> Recipe:
@@ -118,9 +95,7 @@ def detect(root: Path, families: Sequence[str | ModuleType] | None = None) -> Re
     looked: list[str] = []
     for entry in FAMILIES if families is None else families:
         module = _family_module(entry)
-        looked += _markers(entry, module)
-        if module is None:
-            continue
+        looked += module.MARKERS   # what the family looks for: for the message when none recognises the tree
         recipe = module.detect(root)
         if recipe is not None:
             return recipe

@@ -16,6 +16,7 @@ from osdk_conformance.sdk.family import Recipe
 
 ADAPTER_DIR = ROOT / "conformance" / "sdk_testee" / "core"
 LAYOUTS = ("osdk-core", "lib")          # 3.1.9 and later, then 3.1.8 and earlier
+MARKERS = tuple(f"{d}/src/DJI_Codec.cpp" for d in LAYOUTS)   # what detect() looks for first
 NEEDED = ("DJI_API.cpp", "DJI_App.cpp", "DJI_Codec.cpp", "DJI_Link.cpp", "DJI_Memory.cpp", "DJI_HardDriver.cpp")
 SUPPORTED = {"2.3": 230, "3.1.7": 317, "3.1.8": 318, "3.1.9": 319, "3.2.0": 320, "3.2.2": 322}
 PROFILE_BITS = {"m100-fw2.3": 1, "m100-fw3.1": 2, "a3-fw3.1": 4}   # adapter.cpp ALL_PROFILES order

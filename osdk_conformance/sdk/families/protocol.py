@@ -19,6 +19,7 @@ from osdk_conformance.sdk.family import Recipe
 
 ADAPTER_DIR = ROOT / "conformance" / "sdk_testee" / "protocol"
 SELECT_SHIM = ADAPTER_DIR / "platform_select"
+MARKERS = ("osdk-core/protocol/inc/dji_open_protocol.hpp",)   # what detect() looks for first
 
 # The SDK's own files the testee needs: the receive pipeline, AES and the
 # encoder (protocol/), the serial-driver and thread base classes and the
