@@ -57,19 +57,9 @@ ADAPTER_HEADERS = (
 # SDK's platform/linux/inc is left off: Protocol constructs its serial device
 # and thread handle by those class names, and the SDK's serial header does not
 # compile against current glibc); dji_log.cpp is replaced by the log stub.
-SDK_SOURCES_33 = (
-    "protocol/src/dji_open_protocol.cpp",
-    "protocol/src/dji_aes.cpp",
-    "hal/src/dji_hard_driver.cpp",
-    "hal/src/dji_memory.cpp",
-    "hal/src/dji_thread_manager.cpp",
-    "api/src/dji_broadcast.cpp",
-    "api/src/dji_version.cpp",
-    "api/src/dji_ack.cpp",
-    "api/src/dji_error.cpp",
-    "api/src/dji_command.cpp",
-)
-INCLUDE_DIRS_33 = ("api/inc", "protocol/inc", "hal/inc", "utility/inc")
+BASE_SOURCE = "protocol/src/dji_protocol_base.cpp"   # ProtocolBase, new in 3.4
+SDK_SOURCES_33 = tuple(rel for rel in SDK_SOURCES if rel != BASE_SOURCE)
+INCLUDE_DIRS_33 = tuple(d for d in INCLUDE_DIRS if not d.startswith("platform/"))
 ADAPTER_HEADERS_33 = (
     "protocol/inc/dji_open_protocol.hpp",
     "api/inc/dji_type.hpp",
@@ -185,7 +175,7 @@ def detect(root: Path) -> Recipe | None:
         return None
     if parts[0] > 3:
         raise UsageError(UNSUPPORTED_4X.format(root=root, version=version))
-    if not (core / "protocol" / "src" / "dji_protocol_base.cpp").is_file():
+    if not (core / BASE_SOURCE).is_file():
         if parts[:2] != (3, 3):
             raise UsageError(f"{root}: Onboard-SDK {version} tree lacks osdk-core/protocol/src/dji_protocol_base.cpp "
                              "(3.4 to 3.9 have it; only 3.3.x has the single-class Protocol receiver)")
