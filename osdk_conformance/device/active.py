@@ -47,7 +47,10 @@ ACTIVE_CHECKS = ("active.version", "active.activation", "active.frequency", "act
 # `osdkc` returns 130 for any other command interrupted with Ctrl-C.
 EXIT_BY_SIGNAL = {name: exit_status_of_signal(name) for name in ("SIGINT", "SIGTERM")}
 CLEANUP_ACK_TIMEOUT, CLEANUP_TRIES = 0.5, 2   # after an interruption: at most ~2 s of waiting per command
-PORT_BACK_TIMEOUT = 2.0                        # s to wait for a lost port to come back before the clean-up
+# s the clean-up waits, in all, for a lost port to come back: before its
+# first command and whenever a command finds the port down (a cable glitch
+# must not leave the aircraft under onboard control)
+CLEANUP_PORT_WAIT = 4.0
 
 
 class RunInterrupted(KeyboardInterrupt):
@@ -172,6 +175,8 @@ class Commander:
         self.payload = osdk_payload
         self.seq = 1
         self.ack_timeout = ack_timeout
+        # s left to wait for a lost port to come back (0: a command that finds the port down fails at once)
+        self.port_wait = 0.0
 
     def _next_seq(self) -> int:
         self.seq = (self.seq + 1) & 0xFFFF
@@ -197,7 +202,7 @@ class Commander:
         t0 = time.monotonic()
         for _ in range(tries):
             try:
-                self.port.write(frame)
+                self._write(frame)
             except PortDown as e:
                 return None, f"port down: {e}"
             ack = self.an.wait_ack(2, seq, timeout)
@@ -208,6 +213,25 @@ class Commander:
                     return None, f"ACK does not decode: {one_line(e)} (value {ack[3].hex()})"
                 return parsed, time.monotonic() - t0
         return None, f"no ACK after {tries} tries of {timeout}s"
+
+
+    def _write(self, frame: bytes) -> None:
+        """Write; a port found down is waited for (within `port_wait`) and
+        the frame written once more."""
+        try:
+            self.port.write(frame)
+        except PortDown:
+            if not self.await_port():
+                raise
+            self.port.write(frame)
+
+    def await_port(self) -> bool:
+        """Wait for the port (reopened by the reader thread), within what is
+        left of `port_wait`; True when it is there."""
+        t0 = time.monotonic()
+        back = self.port.wait_back(self.port_wait)
+        self.port_wait = max(0.0, self.port_wait - (time.monotonic() - t0))
+        return back
 
 
 def _code(v) -> tuple[int, str]:
@@ -451,7 +475,8 @@ class ActiveRun:
                      + (f"now: {' and '.join(steps)} (SIGINT again cuts this short)" if steps else "nothing to undo"),
                      self.tool)
             if steps:
-                self._await_port()
+                self.cmd.port_wait = CLEANUP_PORT_WAIT
+                self.cmd.await_port()
                 if self.before_cleanup:
                     self.before_cleanup()
             self.enter("release")
@@ -473,12 +498,6 @@ class ActiveRun:
 
     def _ids(self) -> set[str]:
         return {r.id for r in self.results}
-
-    def _await_port(self) -> None:
-        """A lost port is reopened by the reader thread: give it a moment before sending."""
-        end = time.monotonic() + PORT_BACK_TIMEOUT
-        while self.cmd.port.ser is None and time.monotonic() < end:
-            time.sleep(0.05)
 
     def restore_frequencies(self, tries: int = 3, ack_timeout: float | None = None) -> None:
         """Set the rates the run started with again (the profile's defaults, or --expect-rate)."""

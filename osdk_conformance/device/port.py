@@ -33,6 +33,7 @@ class Port:
         self.url, self.baud, self.an, self.cap = url, baud, analyzer, capture
         self.state = LinkState()
         self.ser = None
+        self.failed = None   # the serial object a write last failed on (the reader replaces it when it reopens)
         self.stop = threading.Event()
         self.wlock = threading.Lock()
         self.thread: threading.Thread | None = None
@@ -105,7 +106,22 @@ class Port:
             try:
                 self.ser.write(data)
             except Exception as e:
+                if not isinstance(e, serial.SerialTimeoutException):   # a slow reader is not a lost port
+                    self.failed = self.ser
                 raise PortDown(one_line(e)) from None
+
+    def wait_back(self, timeout: float) -> bool:
+        """Wait up to `timeout` s for a port to write to: one the reader has
+        (re)opened, not the one a write last failed on (the reader may not
+        have noticed that loss yet). True when there is one."""
+        end = time.monotonic() + timeout
+        while True:
+            ser = self.ser
+            if ser is not None and ser is not self.failed:
+                return True
+            if time.monotonic() >= end or self.stop.is_set():
+                return False
+            time.sleep(0.05)
 
     def close(self) -> None:
         self.stop.set()

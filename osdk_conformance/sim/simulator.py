@@ -411,6 +411,7 @@ class SimConfig:
     stall_at: float | None = None
     exit_after: float | None = None
     unplug_at: float | None = None
+    unplug_on_release: bool = False   # unplug when the first release-control request arrives, unheard
     unplug_for: float = 1.0
     baud: int | None = None
     hold: bool = False
@@ -772,6 +773,10 @@ class Simulator:
             self.frame_index = 0
             self._ack(0, 0x10, op.session, op.seq, {"ack_code": "success"})
         elif key == (0x01, 0x00):
+            if self.cfg.unplug_on_release and int(req.request) == 0 and self.unplugged_until is None:
+                self.cfg.unplug_on_release = False
+                self._unplug(now)   # the request is lost with the cable: the host must send it again
+                return
             self._ack(1, 0, op.session, op.seq, {"ack_code": self._control_request(int(req.request))})
         elif key == (0x01, 0x03):
             if self.control == "onboard":
@@ -811,6 +816,13 @@ class Simulator:
 
     # ---- main loop -------------------------------------------------------
 
+    def _unplug(self, now: float) -> None:
+        """The cable pulled: the port closes, what was not yet sent is lost;
+        the run loop reopens it `unplug_for` s later."""
+        self.t.unplug()
+        self.outbuf.clear()
+        self.unplugged_until = now + self.cfg.unplug_for
+
     def _halted(self, now: float) -> bool:
         """Deaf and silent: rebooting, or hung by a planted bug."""
         return ((self.resume_at is not None and now < self.resume_at)
@@ -836,9 +848,7 @@ class Simulator:
             if cfg.exit_after is not None and elapsed >= cfg.exit_after:
                 break
             if cfg.unplug_at is not None and self.unplugged_until is None and elapsed >= cfg.unplug_at:
-                self.t.unplug()
-                self.outbuf.clear()
-                self.unplugged_until = now + cfg.unplug_for
+                self._unplug(now)
                 cfg.unplug_at = None
             if self.unplugged_until is not None and now >= self.unplugged_until:
                 self.t.replug()
@@ -859,6 +869,8 @@ class Simulator:
                 continue
             now = time.monotonic()
             for fd in r:
+                if self.unplugged_until is not None:
+                    break   # a command unplugged the port (--unplug-on-release): its descriptors are closed
                 data = self.t.on_readable(fd)
                 if data:
                     self.on_received(data, now, stalled)
@@ -934,7 +946,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--wrong-profile", choices=profiles, help="broadcast in this profile's layout instead")
     f.add_argument("--stall-at", type=non_negative_float, metavar="S", help="stop sending and answering after S seconds")
     f.add_argument("--unplug-at", type=non_negative_float, metavar="S", help="close the port after S seconds ...")
-    f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S", help="... and reopen it S seconds later")
+    f.add_argument("--unplug-on-release", action="store_true",
+                   help="close the port when the first release-control request arrives, unanswered ...")
+    f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S",
+                   help="... and reopen it S seconds later")
     f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
     b = ap.add_argument_group(
         "planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)",
@@ -995,6 +1010,7 @@ def run_sim(args: argparse.Namespace) -> int:
                     rc_mode=args.rc_mode, faults={n: getattr(args, n) for n in FAULTS}, jitter_ms=args.jitter,
                     rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
+                    unplug_on_release=args.unplug_on_release,
                     unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
                     log_broadcast=args.log_broadcast, bugs=tuple(dict.fromkeys(args.bug)))
     try:
