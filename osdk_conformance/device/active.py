@@ -214,7 +214,6 @@ class Commander:
                 return parsed, time.monotonic() - t0
         return None, f"no ACK after {tries} tries of {timeout}s"
 
-
     def _write(self, frame: bytes) -> None:
         """Write; a port found down is waited for (within `port_wait`) and
         the frame written once more."""
