@@ -758,8 +758,9 @@ def simulator(profile: str = SimConfig.profile, *, seed: int | None = None, rate
     `rates` sets initial broadcast rates (item -> Hz: 0, 1, 10, 50 or 100);
     `rc_mode` the RC switch (obtaining control needs F); `app_id` the only
     app id activation accepts (default: any); `key` the AES-256 app key and
-    `encrypt` whether every frame sent is encrypted; `faults` a probability
-    per broadcast frame for each fault (noise, bitflip, drop_bytes,
+    `encrypt` whether every frame sent is encrypted (all but the version
+    and activation ACKs, which no DJI host can read before it is activated:
+    ERRATA E30); `faults` a probability per broadcast frame for each fault (noise, bitflip, drop_bytes,
     truncate, bad_crc, duplicate), reproducible with `seed`; `implausible`
     broadcasts implausible values; `wrong_profile` broadcasts in another
     profile's layout; `bugs` plants firmware bugs (`osdkc sim --bug`,

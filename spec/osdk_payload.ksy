@@ -81,6 +81,8 @@ types:
     doc-ref:
       - osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout"
       - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp (CoreAPI::getDroneVersionCallback)
+      - https://github.com/dji-sdk/Onboard-SDK/blob/3.9.0/osdk-core/api/src/dji_vehicle.cpp (Vehicle::parseDroneVersionInfo)
+      - https://github.com/dji-sdk/Onboard-SDK/blob/3.2.2/osdk-core/test/DJI_APITest.h (the names an M100 and an A3 answer)
     params:
       - id: profile
         type: u1
@@ -97,10 +99,18 @@ types:
       - id: version_id
         size: 11
         if: has_version_id
-        doc: Version ID, ASCII, NUL-padded (FW 3.1 only).
+        doc: |
+          Version ID (FW 3.1 only), decoded raw. Firmware sends 10 ASCII
+          characters and one NUL: the only form that DJI's fixed reader
+          (3.1.x: 11 bytes) and its scanning reader (3.3 to 3.9: up to the
+          first NUL after the code) read alike (ERRATA E30).
       - id: version_name
         size: 32
-        doc: Version name, ASCII, NUL-padded.
+        doc: |
+          Version name, ASCII, NUL-padded, in DJI's form
+          "SDK-v1.0 BETA <hardware>-<a>.<b>.<c>.<d>" (rules.yaml
+          profiles.*.version_ack.version_name); 3.3 to 3.9 hosts read the
+          firmware version from it (ERRATA E30).
     instances:
       has_version_id:
         doc: true on FW 3.1 profiles, whose reply carries the 11-byte version ID.

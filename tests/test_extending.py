@@ -74,7 +74,8 @@ def edit_rules(path: Path) -> None:
     new["default_rates_hz"][ITEM] = {"hz": 10, "source": "made up"}
     # unlike a3-fw3.1, no version ID in the version ACK: the second profile
     # without one makes has_version_id a condition of two terms
-    new["version_ack"] = {"version_id": False, "source": "made up"}
+    new["version_ack"] = {"version_id": False, "source": "made up",
+                          "version_name": "SDK-v1.0 BETA M100-03.02.01.00", "version_name_source": "made up"}
     rules["units"]["items"][ITEM] = {"source": "made up", "fields": {
         "speed": {"unit": "cm/s"}, "direction": {"unit": "deg"}}}
     path.write_text(yaml.safe_dump(rules, sort_keys=False, allow_unicode=True, width=120))

@@ -13,6 +13,7 @@ import pytest
 import serial
 
 from osdk_conformance.core.deframe import Frame, deframe
+from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.simulator import (PtyTransport, SimConfig, Simulator, Vehicle, euler_to_quaternion,
                                   quaternion_to_euler)
@@ -176,7 +177,7 @@ def test_with_baud_the_first_command_after_open_is_answered(tmp_path, profile, a
         ser.close()
         assert ack is not None and len(ack) == ack_length
         body = osdk_payload(0, 0, True, profile).parse(ack).body
-        assert bytes(body.version_name).startswith(b"SIM-")
+        assert bytes(body.version_name).rstrip(b"\0").decode() == load_profile(profile).version_name
         assert (body.version_id is None) == (profile == "m100-fw2.3")
     finally:
         proc.send_signal(signal.SIGTERM)

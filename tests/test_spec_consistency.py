@@ -362,7 +362,7 @@ def _payload_with_version_ids(tmp_path: Path, rules: dict[str, Any], version_ids
     """osdk_payload.ksy as the generator writes it from rules.yaml with other version_ack.version_id values."""
     data = copy.deepcopy(rules)
     for profile, version_id in version_ids.items():
-        data["profiles"][profile]["version_ack"] = {"version_id": version_id, "source": "decision: test"}
+        data["profiles"][profile]["version_ack"].update(version_id=version_id, source="decision: test")
     path = tmp_path / "rules.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False), encoding="utf-8")
     return yaml.safe_load(GEN.outputs(load_rules(path))[SPEC / "osdk_payload.ksy"])

@@ -125,6 +125,7 @@ class Profile:
     flight_status_alternatives: tuple[str, ...]
     layout_note: str
     has_version_id: bool                  # version ACK carries the 11-byte version ID (ERRATA E30)
+    version_name: str                     # what the FC answers a version query with, DJI's form (ERRATA E30)
 
     @property
     def ksy_name(self) -> str:
@@ -679,6 +680,7 @@ class Rules:
             flight_status_alternatives=tuple(fs.get("alternatives", ())),
             layout_note=p["layout_note"],
             has_version_id=p["version_ack"]["version_id"],
+            version_name=p["version_ack"]["version_name"],
         )
 
     @property

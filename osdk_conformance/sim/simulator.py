@@ -60,21 +60,25 @@ COMMAND_TIMEOUT = 0.5   # s without movement control: hover
 TAU = 0.25              # s, first-order lag of every controlled quantity
 RC_MODE = {"P": -8000, "A": 0, "F": 8000}
 FAULTS = ("noise", "bitflip", "drop_bytes", "truncate", "bad_crc", "duplicate")
-VERSION_ID = b"SIM-0001"
-"""What the simulator puts in the FW 3.1 version ACK's 11-byte version ID (ERRATA E30)."""
+VERSION_ID = b"SIM-000001"
+"""The FW 3.1 version ACK's version ID: 10 characters and one NUL, the one
+form that DJI's fixed reader (11 bytes) and its scanning reader (up to the
+first NUL) read alike (ERRATA E30)."""
+VERSION_CRC = 0x5A17C0DE
+"""No 0x00 byte: the scanning reader would end the CRC-and-ID run inside it."""
+HANDSHAKE = frozenset({(0x00, 0x00), (0x00, 0x01)})
+"""Version query and activation: their ACKs go out plain even with --encrypt,
+because DJI hosts install the key only once activation succeeded (ERRATA E30)."""
 
 
 class _VersionNames(Mapping):
     """Profile id -> the version name the simulator answers a version query
-    with: the profile's first aircraft and its SDK version, one byte a
-    number (`SIM-M100-03.01.10.00`), derived from rules.yaml."""
+    with: rules.yaml's `version_ack.version_name`, DJI's form."""
 
     def __getitem__(self, name: str) -> bytes:
         if name not in profile_names():
             raise KeyError(name)
-        prof = load_profile(name)
-        version = ".".join(f"{b:02d}" for b in prof.sdk_version.to_bytes(4, "big"))
-        return f"SIM-{prof.aircraft[0]}-{version}".encode()
+        return load_profile(name).version_name.encode()
 
     def __iter__(self) -> Iterator[str]:
         return iter(profile_names())
@@ -402,6 +406,7 @@ class SimConfig:
     app_id: int | None = None
     key: bytes | None = None
     encrypt: bool = False
+    encrypt_handshake: bool = False   # with encrypt: the version and activation ACKs too (no DJI host reads them)
     rc_mode: str = "F"
     faults: dict[str, float] = field(default_factory=dict)
     jitter_ms: float = 0.0
@@ -417,6 +422,7 @@ class SimConfig:
     hold: bool = False
     rates: dict[str, int] | None = None
     log_broadcast: str | None = None   # JSON lines: SEQ and value (before fault injection) of every broadcast sent
+    log_acks: str | None = None        # JSON lines: every ACK sent, with the command it answers
     bugs: tuple[str, ...] = ()         # planted firmware bugs (sim/bugs.py BUGS); none: a healthy flight controller
 
 
@@ -482,6 +488,8 @@ class Simulator:
         self.restart_requests_done = 0
         self.bugs = PlantedBugs(tuple(cfg.bugs), self.stats, self.start) if cfg.bugs else None
         self.broadcast_log = open(cfg.log_broadcast, "w", buffering=1) if cfg.log_broadcast else None
+        self.ack_log = open(cfg.log_acks, "w", buffering=1) if cfg.log_acks else None
+        self._current_value = b""
 
     # ---- broadcast -------------------------------------------------------
 
@@ -716,17 +724,26 @@ class Simulator:
         if session == 0:
             return
         value = self._payload(cmd_set, cmd_id, True, self.profile.name).build({"body": body})
-        frame = encode(value=value, is_ack=True, session=session, seq=seq,
-                       key=self.cfg.key if self.cfg.encrypt else None)
+        encrypt = self.cfg.encrypt and (self.cfg.encrypt_handshake or (cmd_set, cmd_id) not in HANDSHAKE)
+        frame = encode(value=value, is_ack=True, session=session, seq=seq, key=self.cfg.key if encrypt else None)
         self.stats["acks_sent"] += 1
         self.last_ack[session] = (seq, self._current_raw, frame)
+        self._log_ack(cmd_set, cmd_id, session, seq, value, encrypt, resent=False)
         self._send(frame, frames=1)
+
+    def _log_ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, value: bytes, encrypted: bool,
+                 resent: bool) -> None:
+        if self.ack_log:
+            self.ack_log.write(json.dumps({
+                "set": cmd_set, "id": cmd_id, "session": session, "seq": seq, "command": self._current_value.hex(),
+                "value": value.hex(), "encrypted": encrypted, "resent": resent}) + "\n")
 
     def on_frame(self, raw: bytes, now: float) -> None:
         op = open_frame(raw, self.cfg.key)
         if op.problem or op.is_ack or op.cmd_set is None:
             return
         self._current_raw = raw
+        self._current_value = op.value
         self.stats["commands_received"] += 1
         if op.cmd_set == 0x01 and op.cmd_id == 0x03:
             self.stats["movement_commands"] += 1
@@ -738,6 +755,9 @@ class Simulator:
             if cached and cached[0] == op.seq and cached[1] == raw:
                 # a retransmission (its ACK was lost or late): answer again, do not execute twice
                 self.stats["acks_sent"] += 1
+                if self.ack_log:
+                    again = open_frame(cached[2], self.cfg.key)
+                    self._log_ack(op.cmd_set, op.cmd_id, op.session, op.seq, again.value, again.encrypted, resent=True)
                 self._send(cached[2], frames=1)
                 return
         key = (op.cmd_set, op.cmd_id)
@@ -748,7 +768,7 @@ class Simulator:
         if key == (0x00, 0x00):
             # every field the ACK has in some profile; the profile's layout keeps its own (ERRATA E30)
             self._ack(0, 0, op.session, op.seq, cut(version_ack_value(self.profile.name), {
-                "ack_code": "activated" if self.activated else "not_activated", "version_crc": 0x5A17C0DE,
+                "ack_code": "activated" if self.activated else "not_activated", "version_crc": VERSION_CRC,
                 "version_id": VERSION_ID.ljust(VERSION_ID_SIZE, b"\0"),
                 "version_name": VERSION_NAME[self.profile.name].ljust(32, b"\0")}))
         elif key == (0x00, 0x01):
@@ -924,7 +944,11 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--seed", type=non_negative_int, help="random seed: the same seed gives the same faults")
     ap.add_argument("--app-id", type=uint32, help="app id activation accepts (default: any)")
     ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
-    ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt every frame sent (needs --key-env)")
+    ap.add_argument("--encrypt", action="store_true",
+                    help="AES-256 encrypt every frame sent but the version and activation ACKs, which no DJI host "
+                         "can decrypt: they install the key after activation (needs --key-env)")
+    ap.add_argument("--encrypt-handshake", action="store_true",
+                    help="with --encrypt: encrypt the version and activation ACKs too (for hosts that must cope)")
     ap.add_argument("--rc-mode", choices=tuple(RC_MODE), default="F", help="RC mode switch (obtain control needs F)")
     ap.add_argument("--rate", action="append", default=[], metavar="ITEM=HZ", help="initial rate of an item (repeatable)")
     ap.add_argument("--baud", type=baud_rate, help="the FC's baud rate; a pty client at another speed sees garbage")
@@ -933,6 +957,9 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--log-broadcast", metavar="FILE",
                     help="write SEQ and value (hex, before fault injection) of every broadcast frame sent, "
                          "a JSON object a line")
+    ap.add_argument("--log-acks", metavar="FILE",
+                    help="write every ACK sent (command set and id, session, SEQ, the command's value, the ACK's "
+                         "value in hex, encrypted or not), a JSON object a line")
     f = ap.add_argument_group("fault injection (probabilities are per broadcast frame)")
     for name in FAULTS:
         f.add_argument(f"--{name.replace('_', '-')}", type=probability, default=0.0, metavar="P",
@@ -998,6 +1025,8 @@ def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
 
 def run_sim(args: argparse.Namespace) -> int:
     key = key_option(args.key_env, args.encrypt)
+    if args.encrypt_handshake and not args.encrypt:
+        raise UsageError("--encrypt-handshake goes with --encrypt")
     prof = load_profile(args.profile)
     rates = {}
     for spec in args.rate:
@@ -1007,12 +1036,13 @@ def run_sim(args: argparse.Namespace) -> int:
                              "and HZ one of 0, 1, 10, 50, 100")
         rates[item] = int(hz)
     cfg = SimConfig(profile=args.profile, seed=args.seed, app_id=args.app_id, key=key, encrypt=args.encrypt,
+                    encrypt_handshake=args.encrypt_handshake,
                     rc_mode=args.rc_mode, faults={n: getattr(args, n) for n in FAULTS}, jitter_ms=args.jitter,
                     rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
                     unplug_on_release=args.unplug_on_release,
                     unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
-                    log_broadcast=args.log_broadcast, bugs=tuple(dict.fromkeys(args.bug)))
+                    log_broadcast=args.log_broadcast, log_acks=args.log_acks, bugs=tuple(dict.fromkeys(args.bug)))
     try:
         transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)
     except OSError as e:
@@ -1021,7 +1051,8 @@ def run_sim(args: argparse.Namespace) -> int:
         sim = Simulator(cfg, transport)
     except OSError as e:
         transport.close()
-        raise UsageError(f"--log-broadcast: cannot write {args.log_broadcast}: {e.strerror or e}") from None
+        option = "--log-acks" if args.log_acks and e.filename == args.log_acks else "--log-broadcast"
+        raise UsageError(f"{option}: cannot write {e.filename}: {e.strerror or e}") from None
 
     def stop(signum, frame):
         sim.running = False
@@ -1047,6 +1078,8 @@ def run_sim(args: argparse.Namespace) -> int:
         transport.close()
         if sim.broadcast_log:
             sim.broadcast_log.close()
+        if sim.ack_log:
+            sim.ack_log.close()
         stats = dict(sim.stats, **sim.rx_accounting(), profile=args.profile, seconds=round(time.monotonic() - sim.start, 3),
                      last_seq=(sim.seq - 1) & 0xFFFF, **sim.authority_state())
         if args.stats:

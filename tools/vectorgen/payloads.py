@@ -14,8 +14,8 @@ from osdk_conformance.core.rules import default_rules, profile as rules_profile
 from .builder import PROFILES, R, Suite
 from .scalars import enum, le16
 
-VERSION_NAME = b"SDK-v1.0 BETA M100-03.01.10.00".ljust(32, b"\x00")
 VERSION_ID = b"01.00.0100".ljust(VERSION_ID_SIZE, b"\x00")
+"""10 characters and a NUL: the ID that DJI's fixed and scanning readers read alike (ERRATA E30)."""
 BUNDLE_ID = b"12345678901234567890123456789012"
 CONTROL_ACK_NAMES = {0: "rc_not_in_f_mode", 1: "released", 2: "obtained", 3: "obtain_in_progress",
                      4: "release_in_progress", 0xC9: "in_ioc_mode"}
@@ -68,30 +68,36 @@ def add_version_query(c: PayloadCases) -> None:
           R("payload.version_query", "payload.trailing"), error="length_mismatch")
 
 
+def version_name(profile: str) -> bytes:
+    """The 32-byte name field with the profile's name in DJI's form (rules.yaml)."""
+    return rules_profile(profile).version_name.encode().ljust(32, b"\x00")
+
+
 def add_version_ack(c: PayloadCases) -> None:
     """The version ACK in the profile's layout (an 11-byte version ID between
     the CRC and the name, or none: ERRATA E30), and in the other layout."""
     id_bytes = VERSION_ID if has_version_id(c.profile) else b""
+    name = version_name(c.profile)
     for code, cname in ((0x0000, "activated"), (0xFF01, "not_activated"), (0x0001, None)):
-        data = struct.pack("<HI", code, 0x12345678) + id_bytes + VERSION_NAME
+        data = struct.pack("<HI", code, 0x12345678) + id_bytes + name
         kw = {}
         if code == 0x0000:
             kw["expected"] = {"value": {"ack_code": enum(0, "activated"), "version_crc": 0x12345678,
                                         **({"version_id": id_bytes.hex()} if id_bytes else {}),
-                                        "version_name": VERSION_NAME.hex()}}
+                                        "version_name": name.hex()}}
         c.add(f"version_ack.0x{code:04x}", 0, 0, True, data,
               f"version ACK, code 0x{code:04x} ({cname or 'no name'}), CRC 0x12345678, "
-              + ("a NUL-padded 11-byte version ID, " if id_bytes else "no version ID (FW 2.3), ")
-              + "a NUL-padded 32-byte name" + ("; hand-written" if kw else ""),
+              + ("an 11-byte version ID of 10 characters and a NUL, " if id_bytes else "no version ID (FW 2.3), ")
+              + f"the 32-byte name {name.rstrip(bytes(1)).decode()!r}, NUL-padded" + ("; hand-written" if kw else ""),
               R("payload.version_ack") + ["E30"] + (R("enums.unnamed") if cname is None else []), **kw)
-    c.lengths("version_ack", 0, 0, True, struct.pack("<HI", 0, 1) + id_bytes + VERSION_NAME, "payload.version_ack",
+    c.lengths("version_ack", 0, 0, True, struct.pack("<HI", 0, 1) + id_bytes + name, "payload.version_ack",
               ["E30"])
     if id_bytes:
-        c.add("version_ack.fw2_3_layout", 0, 0, True, struct.pack("<HI", 0, 1) + VERSION_NAME,
+        c.add("version_ack.fw2_3_layout", 0, 0, True, struct.pack("<HI", 0, 1) + name,
               "the FW 2.3 version ACK (no version ID, 38 bytes) in a FW 3.1 profile: 11 bytes short, "
               "truncated_payload", R("payload.version_ack", "payload.truncated") + ["E30"], error="truncated_payload")
     else:
-        c.add("version_ack.fw3_1_layout", 0, 0, True, struct.pack("<HI", 0, 1) + VERSION_ID + VERSION_NAME,
+        c.add("version_ack.fw3_1_layout", 0, 0, True, struct.pack("<HI", 0, 1) + VERSION_ID + name,
               "the FW 3.1 version ACK (11-byte version ID, 49 bytes) in the FW 2.3 profile: 11 bytes too many, "
               "length_mismatch", R("payload.version_ack", "payload.trailing") + ["E30"], error="length_mismatch")
 

@@ -378,6 +378,14 @@ class OsdkPayload(KaitaiStruct):
         
         .. seealso::
            (CoreAPI::getDroneVersionCallback) - https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp
+        
+        
+        .. seealso::
+           (Vehicle::parseDroneVersionInfo) - https://github.com/dji-sdk/Onboard-SDK/blob/3.9.0/osdk-core/api/src/dji_vehicle.cpp
+        
+        
+        .. seealso::
+           (the names an M100 and an A3 answer) - https://github.com/dji-sdk/Onboard-SDK/blob/3.2.2/osdk-core/test/DJI_APITest.h
         """
         def __init__(self, profile, _io, _parent=None, _root=None):
             super(OsdkPayload.VersionAckValue, self).__init__(_io)

@@ -102,8 +102,8 @@ final class Failures {
         lines("OsdkPayload$LostControl", new int[] {662}, new String[] {"reason"});
         lines("OsdkPayload$LostControlAckValue", new int[] {702}, new String[] {"ack_code"});
         lines("OsdkPayload$UnknownValue", new int[] {742}, new String[] {"raw"});
-        lines("OsdkPayload$VersionAckValue", new int[] {784, 785, 787, 789}, new String[] {"ack_code", "version_crc", "version_id", "version_name"});
-        lines("OsdkPayload$VersionQuery", new int[] {866}, new String[] {"arbitrary"});
+        lines("OsdkPayload$VersionAckValue", new int[] {786, 787, 789, 791}, new String[] {"ack_code", "version_crc", "version_id", "version_name"});
+        lines("OsdkPayload$VersionQuery", new int[] {874}, new String[] {"arbitrary"});
     }
 
     private Failures() {

@@ -762,6 +762,8 @@ public class OsdkPayload extends KaitaiStruct {
      * M100 FW 2.3 has none (ERRATA E30).
      * @see "osdk-conformance shared/reference/PROTOCOL-FACTS.md section 2, "Version reply layout""
      * @see <a href="https://github.com/dji-sdk/Onboard-SDK/blob/3.1.9/osdk-core/src/DJI_API.cpp">(CoreAPI::getDroneVersionCallback)</a>
+     * @see <a href="https://github.com/dji-sdk/Onboard-SDK/blob/3.9.0/osdk-core/api/src/dji_vehicle.cpp">(Vehicle::parseDroneVersionInfo)</a>
+     * @see <a href="https://github.com/dji-sdk/Onboard-SDK/blob/3.2.2/osdk-core/test/DJI_APITest.h">(the names an M100 and an A3 answer)</a>
      */
     public static class VersionAckValue extends KaitaiStruct {
 
@@ -823,12 +825,18 @@ public class OsdkPayload extends KaitaiStruct {
         public long versionCrc() { return versionCrc; }
 
         /**
-         * Version ID, ASCII, NUL-padded (FW 3.1 only).
+         * Version ID (FW 3.1 only), decoded raw. Firmware sends 10 ASCII
+         * characters and one NUL: the only form that DJI's fixed reader
+         * (3.1.x: 11 bytes) and its scanning reader (3.3 to 3.9: up to the
+         * first NUL after the code) read alike (ERRATA E30).
          */
         public byte[] versionId() { return versionId; }
 
         /**
-         * Version name, ASCII, NUL-padded.
+         * Version name, ASCII, NUL-padded, in DJI's form
+         * "SDK-v1.0 BETA <hardware>-<a>.<b>.<c>.<d>" (rules.yaml
+         * profiles.*.version_ack.version_name); 3.3 to 3.9 hosts read the
+         * firmware version from it (ERRATA E30).
          */
         public byte[] versionName() { return versionName; }
 
