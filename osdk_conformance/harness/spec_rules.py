@@ -30,6 +30,8 @@ RULES: dict[str, str] = {
     "stream.resync": "a bad header drops one byte and rescans; a bad CRC-32 rescans after the start byte",
     "stream.chunking": "events do not depend on how the bytes are split into reads",
     "stream.truncated_tail": "a frame cut off by the end of the stream is truncated_frame, then rescanned",
+    "stream.long": "streams longer than a receive buffer (300 and 1,024 bytes): long garbage, the largest frame, "
+                   "a header announcing LEN 1023; the frame after them is still found",
     "stream.ack_match": "an ACK is decoded as the ACK of the command with its session and SEQ seen earlier",
     "stream.ack_memory": "what ACK matching remembers: a match removes the entry even when its value fails to decode, "
                          "a command that fails to decode changes nothing, at most 1024 entries with the oldest "

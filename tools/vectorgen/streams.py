@@ -60,6 +60,7 @@ def gen_streams() -> Suite:
         add_ack_matching(c)
         add_ack_memory(c.add, profile)
         add_random_mix(c)
+        add_long_streams(c)
         add_stream_errors(profile, c.add)
         add_rule_pairs(profile, "decode_stream", "precedence", c.add)
         add_header_bits(c.add, stream=True)
@@ -188,3 +189,54 @@ def add_random_mix(c: StreamCases) -> None:
             left -= sizes[-1]
         c.add(f"mix.{k}", "stream.mix", f"random mix #{k} of frames, corrupted frames and noise, random read sizes",
               data, R("stream.resync", "stream.chunking"), chunks=sizes)
+
+
+RECEIVE_BUFFERS = (300, 1024)
+"""Receive-buffer sizes of known receivers: every long stream below crosses both."""
+MAX_LEN = 1023
+
+
+def _small_reads(c: StreamCases, n: int) -> list[int]:
+    sizes, left = [], n
+    while left > 0:
+        sizes.append(min(left, c.rng.randrange(1, 64)))
+        left -= sizes[-1]
+    return sizes
+
+
+def add_long_streams(c: StreamCases) -> None:
+    """Streams longer than a receive buffer: a receiver that keeps its
+    garbage, its half-read frame or its header in a fixed buffer must not
+    lose the frame after it. Each whole and in small reads."""
+    unknown = (0x00, 0x7E)
+    max_frame = frame_bytes(cmd_set=unknown[0], cmd_id=unknown[1], value=c.noise(MAX_LEN - 12 - 2 - 4, allow_sof=True),
+                            session=0, seq=11)
+    mid_frame = frame_bytes(cmd_set=unknown[0], cmd_id=unknown[1], value=c.noise(400, allow_sof=True), session=0,
+                            seq=12)
+    assert len(max_frame) == MAX_LEN
+    long_header = frame_bytes(cmd_set=unknown[0], cmd_id=unknown[1], value=b"", length=MAX_LEN, data=b"")[:12]
+    cases = {
+        "noise_then_frame": ("1,100 bytes of noise without a start byte, then the movement frame: one garbage event",
+                             c.noise(1100) + MOVE, R("stream.garbage", "stream.long")),
+        "noise_with_sof_then_frame": ("1,100 bytes of noise with false start bytes, then the movement frame",
+                                      c.noise(1100, allow_sof=True) + MOVE, R("stream.resync", "stream.long")),
+        "max_frame_then_frame": (f"a {MAX_LEN}-byte frame (the largest LEN), then the movement frame and a broadcast",
+                                 max_frame + MOVE + c.bc, R("frame.len", "stream.long")),
+        "frames_past_buffer": (f"a {len(mid_frame)}-byte frame, then movement frames back to back past 1,100 bytes",
+                               mid_frame + MOVE * ((1100 - len(mid_frame)) // len(MOVE) + 1),
+                               R("frame.len", "stream.long")),
+        "long_len_header_then_frame": (f"a good header announcing LEN {MAX_LEN} (no frame follows it), then the "
+                                       "movement frame and 1,000 bytes of noise: bad_crc32 over the announced length, "
+                                       "then the rescan finds the frame", long_header + MOVE + c.noise(1000),
+                                       R("stream.resync", "frame.crc32", "stream.long")),
+        "long_len_header_cut": (f"a good header announcing LEN {MAX_LEN}, then the movement frame and 600 bytes of "
+                                "noise, and the stream ends before the announced length: truncated_frame, then the "
+                                "rescan finds the frame", long_header + MOVE + c.noise(600),
+                                R("stream.truncated_tail", "stream.long")),
+    }
+    for name, (comment, data, flags) in cases.items():
+        assert len(data) > RECEIVE_BUFFERS[0], name
+        c.add(f"long.{name}", "stream.long", comment, data, flags)
+        c.add(f"long.{name}.small_reads", "stream.long", comment + "; in reads of 1 to 63 bytes", data,
+              flags + R("stream.chunking"), chunks=_small_reads(c, len(data)))
+
