@@ -120,3 +120,17 @@ def test_encrypt_keeps_the_handshake_plain_unless_asked(handshake_too):
     assert control.encrypted
     assert osdk_payload(0, 1, True, "m100-fw3.1").parse(activation.value).body.ack_code == "success"
     vr.agree(version.value)
+
+
+@pytest.mark.parametrize("profile", FW31)
+def test_the_acceptance_check_passes_dji_form_and_names_what_breaks_dji_hosts(profile):
+    prof = load_profile(profile)
+    name = prof.version_name.encode().ljust(32, b"\0")
+    assert vr.host_problem(0, VERSION_CRC, VERSION_ID, name, prof.sdk_version) is None
+    former = b"SIM-M100-03.01.10.00".ljust(32, b"\0")
+    assert "Drone version not obtained" in vr.host_problem(0, VERSION_CRC, VERSION_ID, former, prof.sdk_version)
+    short_id = b"SIM-0001".ljust(11, b"\0")   # the scanning reader then starts the name two NULs early
+    assert "cannot read it" in vr.host_problem(0, VERSION_CRC, short_id, name, prof.sdk_version)
+    tenfold = name.rstrip(b"\0").replace(b".01.00", b".10.00").replace(b".100.00", b".10.00").ljust(32, b"\0")
+    assert "activate with that version or refuse it" in vr.host_problem(0, VERSION_CRC, VERSION_ID, tenfold,
+                                                                         prof.sdk_version)

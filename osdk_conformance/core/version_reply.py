@@ -130,3 +130,20 @@ def agree(value: bytes) -> tuple[VersionReading, VersionReading]:
                                 f"{fixed.name!r}; the scanning reader CRC {scanned.crc}, ID {scanned.version_id!r}, "
                                 f"name {scanned.name!r}")
     return fixed, scanned
+
+
+def host_problem(code: int, crc: int, version_id: bytes, name: bytes, sdk_version: int) -> str | None:
+    """Why DJI's 3.3 to 3.9 hosts could not use a FW 3.1 version reply with
+    these fields (they would stop before activating, or activate with another
+    version than `sdk_version`, the profile's), or None when they can."""
+    value = struct.pack("<HI", code, crc) + version_id + name
+    try:
+        _, scanned = agree(value)
+    except VersionReplyError as e:
+        return f"DJI's 3.3 to 3.9 hosts cannot read it ({e}): they stop at \"Drone version not obtained\""
+    if scanned.firmware_word != sdk_version:
+        a, b, c, d = scanned.firmware
+        return (f"DJI's 3.3 to 3.9 hosts read firmware {a}.{b}.{c}.{d} from it (hardware {scanned.hardware!r}), "
+                f"not the profile's {sdk_version >> 24}.{sdk_version >> 16 & 0xFF}.{sdk_version >> 8 & 0xFF}."
+                f"{sdk_version & 0xFF}: they activate with that version or refuse it")
+    return None

@@ -27,6 +27,7 @@ from osdk_conformance.core.wire import encode
 from osdk_conformance.device.analysis import CODE_OF_HZ
 from osdk_conformance.device.checks import flags_check, rate_check
 from osdk_conformance.device.port import PortDown
+from osdk_conformance.core.version_reply import host_problem
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
 from osdk_construct.control import encode_movement_control
 from osdk_construct.payload import osdk_payload
@@ -335,9 +336,15 @@ class ActiveRun:
                    "version_name": name.decode("ascii", "replace"), "ack after s": round(info, 3)}
         if ack.version_id is not None:   # FW 3.1 profiles: the reply parsed in the profile's layout (ERRATA E30)
             details["version_id"] = bytes(ack.version_id).rstrip(b"\0").decode("ascii", "replace")
+        problem = None
+        if ack.version_id is not None:   # what DJI's 3.3 to 3.9 hosts make of it (ERRATA E30)
+            problem = host_problem(code[0], int(ack.version_crc), bytes(ack.version_id), bytes(ack.version_name),
+                                   self.an.prof.sdk_version)
         if code[0] not in (0x0000, NOT_ACTIVATED) or not printable:
             self.res("active.version", FAIL, "version ACK: unknown code or unprintable version name", details,
                      "bad_ack")
+        elif problem:
+            self.res("active.version", FAIL, f"version ACK {name.decode()!r}: {problem}", details, "bad_ack")
         else:
             self.res("active.version", PASS, f"version {name.decode()} ({code[1]})", details)
         return ack
