@@ -3,8 +3,10 @@
 Without a checkout of DJI's Onboard-SDK the tests here check what the
 command does with trees it cannot use (exit 2 naming the reason), the
 field-by-field comparison, and the simulator's broadcast log it compares
-against. With OSDK_SRC pointing at a 3.1.x checkout they also build the
-SDK's host stack and run whole sessions, and interrupt one.
+against, the refused-by-design and wire-ACK verdicts. With OSDK_SRC
+pointing at a checkout of 3.1.x or 3.3 to 3.9 they also build the SDK's
+host stack and run whole sessions (both baud rates, plain and encrypted),
+and interrupt one.
 """
 from __future__ import annotations
 
@@ -26,20 +28,46 @@ from osdk_conformance.core.wire import open_frame
 from osdk_conformance.sim.simulator import spawned
 
 OSDK_SRC = os.environ.get("OSDK_SRC")
-needs_sdk = pytest.mark.skipif(not OSDK_SRC, reason="OSDK_SRC does not point at a checkout of DJI's Onboard-SDK 3.1.x")
+needs_sdk = pytest.mark.skipif(not OSDK_SRC, reason="OSDK_SRC does not point at a checkout of DJI's Onboard-SDK "
+                                                     "(3.1.x or 3.3 to 3.9)")
 
 
 def fake_tree(root: Path, version: str = "3.1.9", leave_out: str | None = None,
               layout: sdk_host.Layout31 = sdk_host.LAYOUTS_31[0]) -> Path:
-    """A directory with a 3.1.x layout's file names (no SDK code in it)."""
-    for rel in layout.required():
+    """A directory with a 3.1.x layout's file names (no SDK code in it); the
+    marks by which the core family tells 3.1.8 (lib/) and 3.2.2 apart."""
+    extra = [f"{layout.inc}/DJICommonType.h"] if layout.inc.startswith("lib/") else []
+    for rel in layout.required() + extra:
         if rel == leave_out:
             continue
         f = root / rel
         f.parent.mkdir(parents=True, exist_ok=True)
         f.write_text(f"/* @version {version} */\n"   # the SDK version constants of the two FW 3.1 profiles
                      "const Version versionM100_31 = (MAKE_VERSION(3, 1, 10, 0));\n"
-                     "const Version versionA3_31 = (MAKE_VERSION(3, 1, 100, 0));\n")
+                     "const Version versionA3_31 = (MAKE_VERSION(3, 1, 100, 0));\n"
+                     + ("/* notifyCaller */\n" if rel.endswith("DJI_Link.cpp") else "")
+                     + ("/* fwVersion */\n" if version == "3.2.2" and rel.endswith("DJI_Type.h") else ""))
+    return root
+
+
+def fake_vehicle_tree(root: Path, version: str = "3.9.0", leave_out: str | None = None) -> Path:
+    """A directory with the file names of a 3.3 to 3.9 tree (Vehicle API) and
+    the README heading by which the protocol family reads the release."""
+    from osdk_conformance.sdk.families import protocol
+
+    series = ".".join(version.split(".")[:2])
+    (root / "README.md").parent.mkdir(parents=True, exist_ok=True)
+    (root / "README.md").write_text(f"# DJI Onboard SDK (OSDK) {series}\n\nOSDK {version} was released\n")
+    if series == "3.3":
+        rels = protocol.SDK_SOURCES_33 + protocol.ADAPTER_HEADERS_33
+    else:
+        rels = protocol.SDK_SOURCES + protocol.ADAPTER_HEADERS
+    for rel in {*rels, *sdk_host.VEHICLE_REQUIRED, "api/src/dji_control.cpp"}:
+        if "osdk-core/" + rel == leave_out:
+            continue
+        f = root / "osdk-core" / rel
+        f.parent.mkdir(parents=True, exist_ok=True)
+        f.write_text("/* file name only */\n")
     return root
 
 
@@ -54,27 +82,128 @@ def test_missing_file_is_exit_2_naming_it(tmp_path, capsys, layout):
         tree = fake_tree(tmp_path / missing.replace("/", "_"), leave_out=missing, layout=layout)
         code, err = host_test(capsys, "--osdk", str(tree))
         assert code == 2
-        assert f"missing {missing}: the 3.1.x host stack cannot be built" in err
+        assert f"missing {missing}" in err   # the family's or host-test's own message, naming the file
 
 
-def test_unsupported_3_1_layout_version_is_exit_2(tmp_path, capsys):
+def test_unsupported_core_release_is_exit_2(tmp_path, capsys):
     code, err = host_test(capsys, "--osdk", str(fake_tree(tmp_path, version="3.2.2")))
     assert code == 2
-    assert "Onboard-SDK 3.2.2 is not supported" in err and "3.1.x" in err
+    assert "Onboard-SDK 3.2.2 is not supported by sdk host-test" in err and "3.1.x and 3.3 to 3.9" in err
 
 
-def test_later_sdk_layout_is_exit_2_with_its_version(tmp_path, capsys):
-    f = tmp_path / sdk_host.NEW_LAYOUT_MARK
-    f.parent.mkdir(parents=True)
-    f.write_text("/** @version 3.9 */\n")
+@pytest.mark.parametrize("version, can_encrypt", [("3.3.2", False), ("3.6.1", True), ("3.9.0", True)])
+def test_vehicle_releases_are_recognised_with_what_they_can_do(tmp_path, version, can_encrypt):
+    tree = fake_vehicle_tree(tmp_path, version)
+    (tree / "osdk-core/api/inc/dji_vehicle.hpp").write_text("void setEncryption(bool);\n" if can_encrypt else "\n")
+    found = sdk_host.detect(tree)
+    assert found.family == "protocol" and found.driver.name == "driver_vehicle.cpp"
+    assert found.version.startswith(version[:3]) and found.profiles == ("m100-fw3.1", "a3-fw3.1")
+    assert found.can_encrypt is can_encrypt
+    assert ("OSDKC_SET_ENCRYPTION" in found.defines) is can_encrypt
+    assert set(found.refusals) == {"a3-fw3.1"}
+    assert found.refusals["a3-fw3.1"].startswith("refused by design (osdk-core/api/src/dji_vehicle.cpp")
+    assert all(p.suffix == ".cpp" for p in found.sources)
+
+
+def test_refusal_is_located_in_the_tree(tmp_path):
+    tree = fake_vehicle_tree(tmp_path)
+    (tree / "osdk-core/api/src/dji_vehicle.cpp").write_text(
+        "int\nsetup()\n{\n  if (this->getFwVersion() < extendedVersionBase &&\n    other)\n")
+    assert "dji_vehicle.cpp:4:" in sdk_host.detect(tree).refusals["a3-fw3.1"]
+
+
+def test_vehicle_tree_missing_a_file_is_exit_2_naming_it(tmp_path, capsys):
+    tree = fake_vehicle_tree(tmp_path, leave_out="osdk-core/platform/linux/src/posix_thread.cpp")
+    code, err = host_test(capsys, "--osdk", str(tree))
+    assert code == 2 and "missing osdk-core/platform/linux/src/posix_thread.cpp" in err
+
+
+def test_later_sdk_4x_is_exit_2(tmp_path, capsys):
+    (tmp_path / "osdk-core" / "linker").mkdir(parents=True)
     code, err = host_test(capsys, "--osdk", str(tmp_path))
-    assert code == 2
-    assert "Onboard-SDK 3.9 (osdk-core/api layout) is not supported" in err
+    assert code == 2 and "4.x is not supported" in err
+
+
+def test_serial_rates_follow_the_two_tables_of_the_driver(tmp_path):
+    # our own stand-in for the two tables a Linux serial driver pairs by index
+    src = tmp_path / "serial.cpp"
+    src.write_text("\n\nint st_baud[] = { B9600, B230400 };\nint std_rate[] = { 9600, 230400, 921600 };\n")
+    rates = sdk_host.serial_rates(tmp_path, src)
+    assert rates[230400] == ""
+    assert rates[921600].startswith("serial.cpp:3: the release's Linux serial driver sets 9600, 230400 baud only")
+    src.write_text("int st_baud[] = { B230400, B921600 };\nint std_rate[] = { 230400, 921600, 1000000 };\n")
+    assert sdk_host.serial_rates(tmp_path, src) == {230400: "", 921600: ""}
+
+
+def test_a_baud_rate_the_release_cannot_set_skips_every_step(tmp_path):
+    tree = sdk_host.SdkTree(tmp_path, "3.1.9", ("m100-fw3.1",), [], [], tmp_path / "driver.cpp",
+                            bauds={230400: "", 921600: "x.cpp:1: 230400 only"})
+    args = type("Args", (), {"baud": 921600, "encrypt": False})()
+    steps = sdk_host.run_profile(tmp_path / "driver", "m100-fw3.1", args, tmp_path, tree)
+    assert [st.verdict for st in steps] == ["SKIP"] * len(sdk_host.STEPS)
+    assert steps[0].detail == "x.cpp:1: 230400 only"
+
+
+def ack(cmd_set: int, cmd_id: int, code: int, command: str = "00", encrypted: bool = False) -> dict:
+    return {"set": cmd_set, "id": cmd_id, "session": 2, "seq": 1, "command": command,
+            "value": code.to_bytes(2, "little").hex(), "encrypted": encrypted, "resent": False}
+
+
+def test_refused_by_design_is_skip_with_the_place_not_fail():
+    s = sdk_host.Session(steps={"version": {"ok": True, "detail": "SDK: success", "version_name": "x", "version_id": "y"},
+                                "activation": {"ok": False, "refused": True, "detail": "SDK: error, ACK code 0xFFFF"}},
+                         exit_code=1)
+    steps = {st.name: st for st in sdk_host._verdicts("a3-fw3.1", s, sdk_host.Comparison(), {"frames_rejected": 0,
+             "rx_bytes_discarded": {"not_a_frame": 0}, "commands_received": 2}, 500, [], "refused by design (f.cpp:9)")}
+    assert steps["activation"].verdict == "SKIP" and steps["activation"].detail.startswith("refused by design (f.cpp:9)")
+    for name in ("frequencies", "broadcast", "obtain_control", "movement", "release_control", "frequency_restore"):
+        assert (steps[name].verdict, steps[name].detail) == ("SKIP", "refused by design (f.cpp:9)")
+    assert steps["host_frames"].verdict == "PASS"
+    # a refusal the release is not known for stays a failure
+    plain = {st.name: st.verdict for st in sdk_host._verdicts("a3-fw3.1", s, sdk_host.Comparison(), {}, 500, [], None)}
+    assert plain["activation"] == "FAIL"
+
+
+def test_an_sdk_verdict_the_wire_does_not_support_is_flagged():
+    # 3.9.0 keeps a control ACK in one byte: 0xFF01 (not activated) reads as 0x01, "release success"
+    release = {"ok": True, "sdk_ok": True, "sdk_code": 0x01, "detail": "SDK: success, ACK code 0x0001"}
+    ok, text, flagged = sdk_host.wire_check("release_control", release, [ack(1, 0, 0xFF01, "00")])
+    assert not ok and flagged
+    assert sdk_host.FLAG in text and "hands the caller 0x0001 for the wire's 0xFF01" in text
+    # 3.3.2 calls the version query's 0xFF01 (answered, not activated yet) an error
+    version = {"ok": True, "sdk_ok": False, "sdk_code": 0xFF01, "detail": "SDK: error"}
+    ok, text, flagged = sdk_host.wire_check("version", version, [ack(0, 0, 0xFF01)])
+    assert ok and flagged and "the SDK reports failure where the wire's 0xFF01 means success" in text
+    # obtain: every ACK of the obtain requests, the last one decides
+    obtain = {"ok": True, "sdk_ok": True, "sdk_code": 2, "detail": ""}
+    ok, text, flagged = sdk_host.wire_check("obtain_control", obtain, [ack(1, 0, 3, "01", True), ack(1, 0, 2, "01", True),
+                                                                      ack(1, 0, 1, "00", True)])
+    assert ok and not flagged and "wire: ACK 0x0003, 0x0002 (2 of 2 encrypted)" in text
+    ok, text, _ = sdk_host.wire_check("frequencies", obtain, [])
+    assert not ok and text == "wire: no ACK sent"
+
+
+def test_broadcasts_without_seq_are_matched_by_their_time_stamp(tmp_path):
+    frames = sent_frames("m100-fw3.1", 6)
+    # distinct time stamps, as the simulator's 400 Hz ticks are
+    log = tmp_path / "sent.jsonl"
+    values = []
+    for seq, v in frames:
+        b = bytearray(v)
+        b[2:6] = (1000 + 8 * seq).to_bytes(4, "little")
+        values.append((seq, bytes(b)))
+    log.write_text("".join(json.dumps({"seq": s, "value": v.hex()}) + "\n" for s, v in values))
+    decoded = [dict(decoded_as_sent("m100-fw3.1", s, v), seq=None, match="time_stamp.time") for s, v in values[2:]]
+    del decoded[1]   # the SDK never reported the frame of SEQ 3
+    exposed = [n for n in sdk_host.spec_fields("m100-fw3.1", values[0][1])[1] if n != "velocity.sensor_id"]
+    c = sdk_host.compare("m100-fw3.1", log, decoded, exposed)
+    assert (c.compared, c.mismatched_frames, c.lost, c.unknown) == (3, 0, 1, 0)
+    assert c.unexposed == {"velocity.sensor_id"}
 
 
 def test_not_a_checkout_and_no_checkout_are_exit_2(tmp_path, capsys, monkeypatch):
     code, err = host_test(capsys, "--osdk", str(tmp_path))
-    assert code == 2 and "not a DJI Onboard-SDK checkout: missing osdk-core/inc/DJI_Version.h" in err
+    assert code == 2 and "not a DJI Onboard-SDK checkout (looked for osdk-core/src/DJI_Codec.cpp" in err
     code, err = host_test(capsys, "--osdk", str(tmp_path / "nowhere"))
     assert code == 2 and "no such directory" in err
     monkeypatch.delenv("OSDK_SRC", raising=False)
@@ -182,21 +311,37 @@ def test_unwritable_broadcast_log_is_exit_2(tmp_path):
 @needs_sdk
 @pytest.mark.slow
 @pytest.mark.realtime
-def test_sdk_host_stack_runs_a_whole_session_on_every_fw31_profile(tmp_path):
+@pytest.mark.parametrize("baud", sdk_host.BAUDS)
+@pytest.mark.parametrize("encrypt", (False, True), ids=("plain", "encrypted"))
+def test_sdk_host_stack_runs_a_whole_session_on_every_profile(tmp_path, baud, encrypt):
+    tree = sdk_host.detect(Path(OSDK_SRC).resolve())
     proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "sdk", "host-test", "--osdk", OSDK_SRC,
-                           "--out", str(tmp_path / "build")], capture_output=True, text=True, timeout=600)
+                           "--out", str(tmp_path / "build"), "--baud", str(baud)] + (["--encrypt"] if encrypt else []),
+                          capture_output=True, text=True, timeout=900)
     out = proc.stdout
     assert proc.returncode == 0, out + proc.stderr
-    for profile in ("m100-fw3.1", "a3-fw3.1"):
-        block = out.split(profile + "\n", 1)[1]
+    ran = 0
+    for profile in tree.profiles:
+        rest = out.split(profile + "\n", 1)[1].splitlines()
+        block = "\n".join(rest[:next((i for i, line in enumerate(rest) if not line.startswith("  ")), len(rest))])
+        if tree.bauds.get(baud):   # the release's serial driver cannot set this rate
+            assert all(f"SKIP  {step}" in block for step in sdk_host.STEPS)
+            continue
+        if profile in tree.refusals:
+            assert "PASS  version" in block
+            assert "SKIP  activation         refused by design (osdk-core/api/src/dji_vehicle.cpp:" in block
+            continue
+        ran += 1
         for step in sdk_host.STEPS:
-            assert f"PASS  {step}" in block
-    assert out.count(": 0 with a mismatch, 0 lost, 0 unknown") == 2
-    assert "items acceleration, angular_rate, battery, control_info, flight_status, gimbal, gps_detail" in out
-    assert out.count("simulator received 150, 150 of them encrypted") == 2
+            assert f"PASS  {step}" in block, block
+        want_enc = 150 if encrypt and tree.can_encrypt else 0
+        assert f"simulator received 150, {want_enc} of them encrypted" in block
+        assert ": 0 with a mismatch, 0 lost, 0 unknown" in block
+        assert "items acceleration, angular_rate, battery, control_info, flight_status, gimbal" in block
+    assert ran or tree.bauds.get(baud)
 
 
-def _control_device(log: Path) -> int | None:
+def _control_device(log: Path, profile: str) -> int | None:
     lines = log.read_text().splitlines() if log.is_file() else []
     if not lines:
         return None
@@ -204,7 +349,7 @@ def _control_device(log: Path) -> int | None:
         rec = json.loads(lines[-1])
     except ValueError:   # caught mid-line
         return None
-    fields = sdk_host.spec_fields("a3-fw3.1", bytes.fromhex(rec["value"]))[1]
+    fields = sdk_host.spec_fields(profile, bytes.fromhex(rec["value"]))[1]
     return fields.get("control_info.control_device")
 
 
@@ -213,13 +358,15 @@ def _control_device(log: Path) -> int | None:
 @pytest.mark.realtime
 def test_ctrl_c_in_movement_releases_control_restores_frequencies_and_stops_everything(tmp_path):
     logs = tmp_path / "logs"
+    tree = sdk_host.detect(Path(OSDK_SRC).resolve())
+    profile = next(p for p in ("a3-fw3.1", "m100-fw3.1") if p in tree.profiles and p not in tree.refusals)
     proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sdk", "host-test", "--osdk", OSDK_SRC,
-                             "--out", str(tmp_path / "build"), "--log-dir", str(logs), "--profile", "a3-fw3.1",
+                             "--out", str(tmp_path / "build"), "--log-dir", str(logs), "--profile", profile,
                              "--frames", "20", "--moves", "5000"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
         deadline = time.monotonic() + 240
-        while _control_device(logs / "a3-fw3.1.broadcast.jsonl") != 2:   # the onboard computer flies
+        while _control_device(logs / f"{profile}.broadcast.jsonl", profile) != 2:   # the onboard computer flies
             assert proc.poll() is None and time.monotonic() < deadline, proc.stderr.read() if proc.poll() else ""
             time.sleep(0.2)
         os.killpg(proc.pid, signal.SIGINT)   # what Ctrl-C at the terminal does
@@ -230,7 +377,7 @@ def test_ctrl_c_in_movement_releases_control_restores_frequencies_and_stops_ever
     assert proc.returncode == 130, err
     assert "interrupted; release_control PASS" in err
     assert "interrupted; frequency_restore PASS" in err
-    assert (logs / "a3-fw3.1.sim-stats.json").is_file()   # the simulator stopped cleanly
+    assert (logs / f"{profile}.sim-stats.json").is_file()   # the simulator stopped cleanly
     assert not processes_mentioning(str(tmp_path))   # neither the driver nor the simulator is left
 
 

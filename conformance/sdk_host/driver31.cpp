@@ -15,6 +15,11 @@
 // counts seconds as milliseconds, so every command here uses the callback API
 // and waits for the ACK with a deadline of its own.
 //
+// --encrypt 0|1 sets the SDK's public switch DJI::onboardSDK::encrypt (DJI_Type.h;
+// DJI_Config.h's USE_ENCRYPT makes it 1 by default): control and movement
+// commands go out encrypted or plain. Broadcasts are reported from the
+// activation on (before it an encrypting aircraft's frames cannot be read).
+//
 // SIGINT/SIGTERM: the session stops at the next step and still releases
 // control and restores the frequencies before exiting.
 
@@ -153,6 +158,7 @@ struct Fields {
 struct Session {
   CoreAPI *api;
   std::mutex m;
+  volatile bool record = false;
   long broadcasts = 0;
   BroadcastData last{};
 };
@@ -160,6 +166,7 @@ struct Session {
 // Every broadcast, named in the spec's vocabulary from the SDK's decoded structure.
 void on_broadcast(CoreAPI *api, Header *header, UserData data) {
   Session *s = static_cast<Session *>(data);
+  if (!s->record) return;
   BroadcastData b = api->getBroadcastData();
   Fields f;
   f.add("time_stamp.time", b.timeStamp.time);
@@ -241,6 +248,7 @@ struct Options {
   unsigned app_id = 0;
   long frames = 500;
   int moves = 150;
+  int encrypt = 0;
   std::vector<int> restore;   // frequency codes to restore at the end, one per item
   Version sdk_version = 0;    // the SDK target version of the profile (rules.yaml covers.sdk_version)
   size_t items = 0;           // how many items the profile's flag word has
@@ -267,6 +275,7 @@ bool parse(int argc, char **argv, Options &o) {
     else if (k == "--frames") o.frames = atol(v);
     else if (k == "--moves") o.moves = atoi(v);
     else if (k == "--restore") o.restore = parse_codes(v);
+    else if (k == "--encrypt") o.encrypt = atoi(v) != 0;
     else return false;
   }
   // the profile is the caller's business: it passes what the SDK and the broadcast need of it
@@ -320,6 +329,7 @@ bool set_control(CoreAPI &api, bool obtain, Pending &p, std::string &detail) {
   const unsigned want = obtain ? ACK_SETCONTROL_OBTAIN_SUCCESS : ACK_SETCONTROL_RELEASE_SUCCESS;
   const unsigned running = obtain ? ACK_SETCONTROL_OBTAIN_RUNNING : ACK_SETCONTROL_RELEASE_RUNNING;
   std::string codes;
+  p.code = 0xFFFFu;
   for (int attempt = 0; attempt < 5; attempt++) {
     p.reset();
     api.setControl(obtain, on_ack, &p);
@@ -359,7 +369,7 @@ int main(int argc, char **argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     fprintf(stderr, "usage: %s --port PATH --sdk-version N --items N --key-env VAR [--baud B] "
-                    "[--app-id N] [--frames N] [--moves N] [--restore C,C,...]\n", argv[0]);
+                    "[--app-id N] [--frames N] [--moves N] [--restore C,C,...] [--encrypt 0|1]\n", argv[0]);
     return 2;
   }
   const char *key = getenv(o.key_env.c_str());
@@ -372,6 +382,7 @@ int main(int argc, char **argv) {
   signal(SIGTERM, on_signal);
 
   const size_t items = o.items;
+  DJI::onboardSDK::encrypt = static_cast<uint8_t>(o.encrypt);
   LoggingSerial serial(o.port, o.baud);
   serial.init();
 #ifndef OSDKC_INIT_SETS_NO_STATUS   // 3.1.8's init() leaves the status unset; the version step shows a dead port
@@ -398,7 +409,8 @@ int main(int argc, char **argv) {
   p.reset();
   api.getDroneVersion(on_version, &p);
   bool ok = p.wait(ACK_TIMEOUT_S);
-  step("version", ok, ok ? code_text(p) : "no ACK within 2 s", ",\"value_length\":" + std::to_string(p.length));
+  step("version", ok, ok ? code_text(p) : "no ACK within 2 s",
+       ",\"value_length\":" + std::to_string(p.length) + ",\"sdk_code\":" + std::to_string(p.code));
   all_ok &= ok;
 
   // activation with the app id and key
@@ -408,9 +420,10 @@ int main(int argc, char **argv) {
     data.ID = o.app_id;
     data.encKey = &key_text[0];
     p.reset();
+    session.record = true;
     api.activate(&data, on_activate, &p);
     ok = p.wait(ACK_TIMEOUT_S) && p.code == ACK_ACTIVE_SUCCESS;
-    step("activation", ok, p.done ? code_text(p) : "no ACK within 2 s");
+    step("activation", ok, p.done ? code_text(p) : "no ACK within 2 s", ",\"sdk_code\":" + std::to_string(p.code));
     all_ok &= ok;
   }
 
@@ -418,7 +431,7 @@ int main(int argc, char **argv) {
   if (!g_stop) {
     ok = set_frequencies(api, std::vector<int>(items, BROADCAST_FREQ_50HZ), p, detail);
     frequencies_set = true;
-    step("frequencies", ok, detail);
+    step("frequencies", ok, detail, ",\"sdk_code\":" + std::to_string(p.code));
     all_ok &= ok;
   }
   if (!g_stop) {
@@ -447,7 +460,7 @@ int main(int argc, char **argv) {
   if (!g_stop) {
     ok = set_control(api, true, p, detail);
     in_control = ok;
-    step("obtain_control", ok, detail);
+    step("obtain_control", ok, detail, ",\"sdk_code\":" + std::to_string(p.code));
     all_ok &= ok;
   }
   if (!g_stop && in_control) {
@@ -475,19 +488,20 @@ int main(int argc, char **argv) {
              "%.3f %.3f %.3f, device %u, mode %u", sent, flag, vx, vy, vz, yaw_rate, b.v.x, b.v.y, b.v.z,
              b.ctrlInfo.deviceStatus, b.ctrlInfo.mode);
     ok = follows && sent == o.moves;
-    step("movement", ok, text, ",\"sent\":" + std::to_string(sent) + ",\"flag\":" + std::to_string(flag));
+    step("movement", ok, text, ",\"sent\":" + std::to_string(sent) + ",\"flag\":" + std::to_string(flag) +
+         ",\"mode\":" + std::to_string(b.ctrlInfo.mode));
     all_ok &= ok;
   }
 
   // Whatever happened above, hand control back and restore the frequencies.
   if (in_control) {
     ok = set_control(api, false, p, detail);
-    step("release_control", ok, detail);
+    step("release_control", ok, detail, ",\"sdk_code\":" + std::to_string(p.code));
     all_ok &= ok;
   }
   if (frequencies_set && !o.restore.empty()) {
     ok = set_frequencies(api, o.restore, p, detail);
-    step("frequency_restore", ok, detail);
+    step("frequency_restore", ok, detail, ",\"sdk_code\":" + std::to_string(p.code));
     all_ok &= ok;
   }
   threads.stop();
