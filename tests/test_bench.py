@@ -162,13 +162,18 @@ def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     from osdk_conformance.bench.report import _reliability_targets, _verdict
 
     faults = {"noise": {"runs": 20, "detected": 20, "missed": []}}
-    none = {"runs": 0, "passed": 0, "under_load": 0, "retransmissions": 0}
-    short = {"runs": 10, "passed": 10, "under_load": 2, "retransmissions": 0}
-    full = {"runs": 200, "passed": 200, "under_load": 50, "retransmissions": 0}
-    verdicts = lambda h: [_verdict(t["met"]) for t in _reliability_targets({"healthy": h, "faults": faults})]
+    none = {"runs": 0, "passed": 0, "active": 0, "passive": 0, "retransmissions": 0}
+    short = {"runs": 10, "passed": 10, "active": 5, "passive": 5, "retransmissions": 0}
+    full = {"runs": 200, "passed": 200, "active": 100, "passive": 100, "retransmissions": 0}
+
+    def verdicts(h, busy=2):
+        rel = {"healthy": h, "faults": faults, "load": {"busy_loops_per_core": busy}}
+        return [_verdict(t["met"]) for t in _reliability_targets(rel)]
+
     assert verdicts(none) == ["not measured", "met"]
     assert verdicts(short) == ["MISSED", "met"]
     assert verdicts(full) == ["met", "met"]
+    assert verdicts(full, busy=0) == ["MISSED", "met"]   # an idle machine proves nothing about load
 
 
 def test_device_fuzz_section_reports_each_baud_rate(tmp_path):

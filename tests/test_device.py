@@ -27,9 +27,6 @@ pytestmark = pytest.mark.realtime
 PROFILES = profile_names()
 KEY = "00112233445566778899aabbccddeeff" * 2
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
-# Clean runs share the machine with other tests: allow scheduling noise in
-# arrival times there; the jitter fault test keeps the default limit.
-RELAXED = ("--max-jitter-ms", "150")
 
 
 def sim(*args: str, env: dict | None = None):
@@ -63,22 +60,22 @@ def _scenarios(tmp) -> dict[str, tuple[tuple, tuple, dict | None]]:
     for p in PROFILES:
         sc[f"motion-{p}"] = (("--profile", p, "--app-id", "1234", "--seed", "1"),
                              ("--profile", p, "--duration", "2", "--active", "--allow-motion", "--app-id", "1234",
-                              "--html", str(tmp / f"{p}.html"), "--junit", str(tmp / f"{p}.xml"), *RELAXED, *QUICK),
+                              "--html", str(tmp / f"{p}.html"), "--junit", str(tmp / f"{p}.xml"), *QUICK),
                              None)
     for kind, (sim_args, _, seconds) in FAULTS.items():
         sc[f"fault-{kind}"] = (("--profile", "a3-fw3.1", "--seed", "7", *sim_args),
                                ("--profile", "a3-fw3.1", "--duration", str(seconds)), None)
     sc["no-motion"] = (("--app-id", "9"), ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "9",
-                                          *RELAXED, *QUICK), None)
+                                          *QUICK), None)
     sc["rc-mode-p"] = (("--rc-mode", "P", "--app-id", "3"),
-                       ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "3", *RELAXED, *QUICK), None)
+                       ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "3", *QUICK), None)
     sc["wrong-app-id"] = (("--app-id", "3"),
-                          ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "4", *RELAXED, *QUICK),
+                          ("--profile", "a3-fw3.1", "--duration", "1", "--active", "--app-id", "4", *QUICK),
                           None)
     sc["aes-tcp"] = (("--tcp", "0", "--profile", "m100-fw3.1", "--app-id", "77", "--key-env", "OSDK_TEST_KEY",
                       "--encrypt"),
                      ("--profile", "m100-fw3.1", "--duration", "1.5", "--active", "--app-id", "77", "--key-env",
-                      "OSDK_TEST_KEY", "--encrypt", *RELAXED, *QUICK), ENV_KEY)
+                      "OSDK_TEST_KEY", "--encrypt", *QUICK), ENV_KEY)
     sc["aes-no-key"] = (("--key-env", "OSDK_TEST_KEY", "--encrypt"), ("--profile", "a3-fw3.1", "--duration", "1"),
                         ENV_KEY)
     return sc
@@ -225,8 +222,7 @@ def test_wrong_baud_rate_is_a_baud_verdict():
         rc, checks, _ = device("--port", url, "--baud", "115200", "--profile", "a3-fw3.1", "--duration", "1.5")
         assert rc == 1
         assert checks["link.baud"][0] == "FAIL" and "wrong baud rate" in checks["link.baud"][1]
-        rc, checks, _ = device("--port", url, "--baud", "921600", "--profile", "a3-fw3.1", "--duration", "1.5",
-                               *RELAXED)
+        rc, checks, _ = device("--port", url, "--baud", "921600", "--profile", "a3-fw3.1", "--duration", "1.5")
         assert rc == 0 and checks["link.baud"][0] == "PASS"
 
 
@@ -235,3 +231,17 @@ def test_usage_errors_exit_2():
     assert rc == 2 and "--allow-motion needs --active" in out
     rc, _, out = device("--port", "/dev/null", "--profile", "a3-fw3.1", "--key-env", "OSDK_SURELY_UNSET_VAR")
     assert rc == 2 and "OSDK_SURELY_UNSET_VAR" in out
+
+
+def test_a_saturated_host_does_not_fail_a_healthy_flight_controller():
+    """Two busy loops per core (load about twice the cores) while a healthy
+    simulator is judged, passive and active: no FAIL, and the jitter verdict
+    rests on the FC's own time stamps (issue 26; the measurement over 200
+    runs is `osdkc bench --only reliability`)."""
+    from osdk_conformance.bench.reliability import BusyLoops
+
+    with BusyLoops(2), sim("--app-id", "1234", "--seed", "3") as (url, _):
+        rc, checks, out = device("--port", url, "--profile", "a3-fw3.1", "--duration", "3", "--active",
+                                 "--allow-motion", "--app-id", "1234", *QUICK)
+    assert rc == 0, (failing(checks), out[-2000:])
+    assert "FC time stamps spread" in checks["stream.jitter"][1]

@@ -46,7 +46,7 @@ from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
 from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
-from osdk_conformance.core.options import non_negative_int, positive_float, positive_int, probability
+from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
 
 SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability")
 DEFAULT_SECTIONS = SECTIONS[:7]
@@ -58,7 +58,7 @@ DEFAULTS = {  # (full, --quick)
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
-RELIABILITY_RUNS, FAULT_RUNS, LOAD_SHARE = 200, 20, 0.25
+RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE = 200, 20, 2
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
@@ -91,12 +91,12 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="cases of the device_fuzz section at each baud rate (default %d, quick %d)"
                          % DEFAULTS["device_fuzz_cases"])
     ap.add_argument("--runs", type=non_negative_int, default=RELIABILITY_RUNS, metavar="N",
-                    help=f"reliability: healthy active runs (default {RELIABILITY_RUNS})")
+                    help=f"reliability: healthy runs, active and passive in turn (default {RELIABILITY_RUNS})")
     ap.add_argument("--fault-runs", type=non_negative_int, default=FAULT_RUNS, metavar="N",
                     help=f"reliability: seeded runs of each simulator fault (default {FAULT_RUNS})")
-    ap.add_argument("--load-share", type=probability, default=LOAD_SHARE, metavar="FRAC",
-                    help=f"reliability: share of the healthy runs beside a busy loop on every core "
-                         f"(default {LOAD_SHARE:g})")
+    ap.add_argument("--busy-per-core", type=non_negative_int, default=BUSY_PER_CORE, metavar="N",
+                    help=f"reliability: busy-loop processes per core for the whole measurement (default "
+                         f"{BUSY_PER_CORE}: the machine saturated; 0: idle)")
     ap.add_argument("--fault-kinds", metavar="KINDS",
                     help="reliability: comma-separated simulator faults to run (default all)")
     ap.add_argument("--parallel", type=positive_int, default=1, metavar="N",
@@ -141,7 +141,7 @@ def command_line(args: argparse.Namespace) -> str:
     if args.quick:
         parts.append("--quick")
     for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),
-                         ("fault_runs", FAULT_RUNS), ("load_share", LOAD_SHARE), ("parallel", 1)):
+                         ("fault_runs", FAULT_RUNS), ("busy_per_core", BUSY_PER_CORE), ("parallel", 1)):
         if getattr(args, opt) != default:
             parts += [f"--{opt.replace('_', '-')}", f"{getattr(args, opt):g}"]
     return " ".join(parts)
@@ -198,7 +198,7 @@ def run_bench(args: argparse.Namespace) -> int:
         result["device_fuzz"] = bench_sections.device_fuzz(device_fuzz_cases, FUZZ_SEED, args.timeout)
     if "reliability" in sections:
         _log(f"reliability: {args.runs} healthy active runs, {args.fault_runs} seeded runs of each fault")
-        result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.load_share, args.parallel,
+        result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.busy_per_core, args.parallel,
                                                           kinds)
         result["reliability"]["command"] = command_line(args)
     if "footprint" in sections:

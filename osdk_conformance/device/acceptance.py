@@ -30,6 +30,7 @@ from osdk_conformance.device.active import (ActiveRun, Commander, EXIT_BY_SIGNAL
                                              to_the_end)
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.checks import Options, passive_results
+from osdk_conformance.device.hostload import HostClock
 from osdk_conformance.device.plots import checks_html, plots_html
 from osdk_conformance.device.port import Port
 from osdk_conformance.harness.report import ERROR, PASS, SKIP, Result, conforms, summary_table, write_html, write_junit
@@ -166,6 +167,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
 
     results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
     run: ActiveRun | None = None
+    host = HostClock()
     with to_the_end(interrupts, port, an, cap) as ending:
         if cap:
             print(f"osdkc device: capturing to {cap.path}", file=sys.stderr, flush=True)
@@ -180,6 +182,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
                             args.allow_motion, args.active_window, args.motion_seconds, interrupts)
             run.run()
     error = ending.error
+    opts.host = host.load()
     with an.lock:
         results += passive_results(an, opts, port.state)
     signame = interrupts.first

@@ -110,6 +110,8 @@ class Analyzer:
         self.item_times: dict[str, list[float]] = {i: [] for i in self.prof.flag_bits}
         # the same frames on the flight controller's own clock (its time stamp item, s), None when not known
         self.item_clock: dict[str, list[float | None]] = {i: [] for i in self.prof.flag_bits}
+        # t, SEQ and FC clock (s, None when its ticks went back) of every frame with a time stamp item
+        self.fc_stamps: list[tuple[float, int, float | None]] = []
         self._clock_ticks: int | None = None
         self._clock_s = 0.0
         self.cmd_frames: dict[str, int] = {}
@@ -257,6 +259,8 @@ class Analyzer:
         self.bcast_raw_prev = raw
         ts = data.get("time_stamp")
         clock = self._fc_clock(ts["time"]) if ts is not None else None
+        if ts is not None:
+            self.fc_stamps.append((t, op.seq, clock))
         for bit, item in enumerate(self.prof.flag_bits):
             if flags >> bit & 1:
                 self.item_times[item].append(t)
@@ -402,6 +406,7 @@ class Analyzer:
         with self.lock:
             cut = bisect_left(self.bcast, t, key=lambda b: b[0])
             del self.bcast[:cut]
+            del self.fc_stamps[:bisect_left(self.fc_stamps, t, key=lambda b: b[0])]
             for item, times in self.item_times.items():
                 k = bisect_left(times, t)
                 del times[:k]

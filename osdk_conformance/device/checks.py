@@ -5,6 +5,7 @@ named Result; docs/ACCEPTANCE.md lists them.
 """
 from __future__ import annotations
 
+from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
 from typing import Any
 
@@ -12,6 +13,7 @@ from osdk_construct.payload import osdk_payload
 
 from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.device.analysis import percentile
+from osdk_conformance.device.hostload import HostLoad
 from osdk_conformance.device.port import LinkState
 from osdk_conformance.harness.report import FAIL, PASS, SKIP, Result
 
@@ -27,6 +29,7 @@ class Options:
     settle: float = 0.3
     flight_status_enum: str | None = None
     expect_rates: dict[str, int] | None = None
+    host: HostLoad | None = None   # a live run's host load (None for a replay: not known)
 
 
 # --------------------------------------------------------------------------
@@ -104,14 +107,36 @@ def stall_check(an, opts: Options, link) -> Result:
         gaps.insert(0, (times[0] - link.t_open, link.t_open))
         # silence while the port was down is the connection check's business
         gaps = [(g, a) for g, a in gaps if not any(lo <= a + g / 2 <= (hi or end) for lo, hi, _ in link.disconnects)]
+    limit = stall_limit(an, opts)
+    host_gaps = [(g, a) for g, a in gaps if g > limit and _fc_kept_sending(an, a, a + g, limit)]
+    gaps = [x for x in gaps if x not in host_gaps]
     worst = max(gaps, default=(0.0, 0.0))
     t0 = link.t_open if link else times[0]
-    limit = stall_limit(an, opts)
+    if host_gaps:
+        g, a = max(host_gaps)
+        note = (f"; the host read nothing for {g:.2f}s from t={a - t0:.2f}s while the flight controller's time stamps "
+                "show it kept sending: host scheduling or the serial adapter"
+                + (f" ({opts.host.text()})" if opts.host else ""))
+    else:
+        note = ""
     if worst[0] > limit:
         return Result("link", "link.stall", FAIL,
                       f"stream stalled: no byte for {worst[0]:.2f}s from t={worst[1] - t0:.2f}s "
-                      f"(limit {limit:g}s)", {"longest silence s": round(worst[0], 3)}, kind="stalled")
-    return Result("link", "link.stall", PASS, f"longest silence {worst[0] * 1000:.0f} ms (limit {limit:g}s)")
+                      f"(limit {limit:g}s){note}", {"longest silence s": round(worst[0], 3)}, kind="stalled")
+    return Result("link", "link.stall", PASS, f"longest silence {worst[0] * 1000:.0f} ms (limit {limit:g}s){note}",
+                  {"host-side silences s": [round(g, 3) for g, _ in host_gaps]} if host_gaps else {})
+
+
+def _fc_kept_sending(an, a: float, b: float, limit: float) -> bool:
+    """Whether the frames read on either side of the silence [a, b] are no
+    further apart on the flight controller's own clock than `limit`: then
+    the FC went on sending and the bytes waited on the host's side."""
+    times, clocks = an.item_times.get("time_stamp", []), an.item_clock.get("time_stamp", [])
+    i = bisect_right(times, a) - 1
+    j = bisect_left(times, b)
+    if i < 0 or j >= len(times) or clocks[i] is None or clocks[j] is None:
+        return False
+    return clocks[j] - clocks[i] <= limit
 
 
 def stall_limit(an, opts: Options) -> float:
@@ -189,7 +214,7 @@ def stream_checks(an, opts: Options, epoch: int = 0) -> list[Result]:
            flags_check(an, ep.rates, t0, t1, "stream.flags", "stream")]
     frames = an.frames_between(t0, t1)
     out += sequence_checks(an, frames, opts)
-    out.append(jitter_check(frames, opts, max(ep.rates.values(), default=0)))
+    out.append(jitter_check(an, frames, opts, max(ep.rates.values(), default=0), t0, t1))
     return out
 
 
@@ -283,9 +308,14 @@ def sequence_checks(an, frames, opts: Options) -> list[Result]:
     return out
 
 
-def jitter_check(frames, opts: Options, top_hz: int) -> Result:
-    if len(frames) < 10 or not top_hz:
-        return Result("stream", "stream.jitter", SKIP, "too few broadcast frames")
+def _spread_ms(residuals: list[float]) -> float:
+    return (percentile(residuals, 99.5) - percentile(residuals, 0.5)) * 1000
+
+
+def arrival_spread(frames) -> tuple[float, float]:
+    """(frame period s, spread ms) of the times (first element of each frame
+    tuple) around a steady clock, frames placed by their SEQ steps (second
+    element; a lost frame leaves its slot empty)."""
     deltas = _seq_deltas(frames)
     step = max(set(deltas), key=deltas.count) or 1
     k, idx = 0, [0]
@@ -294,15 +324,64 @@ def jitter_check(frames, opts: Options, top_hz: int) -> Result:
         idx.append(k)
     ts = [f[0] for f in frames]
     period = (ts[-1] - ts[0]) / idx[-1] if idx[-1] else 0
-    resid = [t - ts[0] - i * period for t, i in zip(ts, idx)]
-    spread = (percentile(resid, 99.5) - percentile(resid, 0.5)) * 1000
-    details = {"frame period ms": round(period * 1000, 3), "arrival spread p0.5..p99.5 ms": round(spread, 2),
-               "limit ms": opts.max_jitter_ms}
-    if spread > opts.max_jitter_ms:
-        return Result("stream", "stream.jitter", FAIL,
-                      f"arrival times spread {spread:.1f} ms around a steady {1 / period if period else 0:.1f} Hz "
-                      f"clock (limit {opts.max_jitter_ms} ms)", details, kind="jitter")
-    return Result("stream", "stream.jitter", PASS, f"arrival spread {spread:.1f} ms", details)
+    return period, _spread_ms([t - ts[0] - i * period for t, i in zip(ts, idx)])
+
+
+def fc_clock_spread(an, t0: float, t1: float) -> tuple[float, float, int] | None:
+    """(period s, spread ms, frames) of the flight controller's own time
+    stamps of the frames read in the window that carry them, around a steady
+    clock, frames placed by their SEQ steps as for the arrival spread: what
+    the FC controls, whatever the host did to the arrival times. None with
+    fewer than 10 such frames."""
+    stamped = [(c, seq) for t, seq, c in an.fc_stamps if t0 <= t <= t1 and c is not None]
+    if len(stamped) < 10:
+        return None
+    period, spread = arrival_spread(stamped)
+    return period, spread, len(stamped)
+
+
+def jitter_check(an, frames, opts: Options, top_hz: int, t0: float, t1: float) -> Result:
+    """The FC's cadence on its own time stamps where the frames carry them;
+    the spread of arrival times is the host's as much as the FC's, so it is
+    judged only without time stamps, and never on a busy host."""
+    if len(frames) < 10 or not top_hz:
+        return Result("stream", "stream.jitter", SKIP, "too few broadcast frames")
+    period, host_spread = arrival_spread(frames)
+    details: dict[str, Any] = {"frame period ms": round(period * 1000, 3),
+                               "arrival spread p0.5..p99.5 ms (host side)": round(host_spread, 2),
+                               "limit ms": opts.max_jitter_ms}
+    if opts.host is not None:
+        details.update(opts.host.details())
+    host_note = ""
+    if host_spread > opts.max_jitter_ms:
+        host_note = (f"; the arrival times spread {host_spread:.1f} ms on this host"
+                     + (f" ({opts.host.text()})" if opts.host else "")
+                     + ": host scheduling or the serial adapter, not the flight controller")
+    fc = fc_clock_spread(an, t0, t1)
+    if fc is not None:
+        fc_period, fc_spread, n = fc
+        details.update({"clock": "flight controller time stamp", "FC frame period ms": round(fc_period * 1000, 3),
+                        "FC time stamp spread p0.5..p99.5 ms": round(fc_spread, 2), "time-stamped frames": n})
+        if fc_spread > opts.max_jitter_ms:
+            return Result("stream", "stream.jitter", FAIL,
+                          f"the flight controller's own time stamps spread {fc_spread:.1f} ms around a steady "
+                          f"{1 / fc_period if fc_period else 0:.1f} Hz clock (limit {opts.max_jitter_ms} ms){host_note}", details,
+                          kind="jitter")
+        return Result("stream", "stream.jitter", PASS,
+                      f"FC time stamps spread {fc_spread:.1f} ms ({n} frames){host_note}", details)
+    details["clock"] = "arrival (no time stamp item in the frames)"
+    if host_spread <= opts.max_jitter_ms:
+        return Result("stream", "stream.jitter", PASS, f"arrival spread {host_spread:.1f} ms", details)
+    if opts.host is None or opts.host.busy:
+        why = (f"a busy host ({opts.host.text()})" if opts.host else "a replay, whose host load is not known")
+        return Result("stream", "stream.jitter", SKIP,
+                      f"arrival times spread {host_spread:.1f} ms on {why}, and the frames carry no time stamp: "
+                      "the flight controller's jitter cannot be told from the host's (broadcast the time stamp "
+                      "item to measure it)", details)
+    return Result("stream", "stream.jitter", FAIL,
+                  f"arrival times spread {host_spread:.1f} ms around a steady {1 / period if period else 0:.1f} Hz "
+                  f"clock (limit {opts.max_jitter_ms} ms) on an idle host ({opts.host.text()}); the frames carry "
+                  "no time stamp to tell the FC's part", details, kind="jitter")
 
 
 VALUE_TEXT = {

@@ -475,6 +475,7 @@ class Simulator:
         self.frame_index = 0
         self.next_frame = self.start
         self.send_at = self.start
+        self.last_stamp = self.start
         self.battery = 90.0
         self.baud_ok = True
         self.unplugged_until: float | None = None
@@ -505,8 +506,9 @@ class Simulator:
                 out.append(item)
         return out
 
-    def broadcast_value(self, items: list[str], now: float) -> bytes:
-        """The broadcast payload carrying `items` at time `now`. The state is
+    def broadcast_value(self, items: list[str], now: float, stamp: float | None = None) -> bytes:
+        """The broadcast payload carrying `items` at time `now`, its time
+        stamp item saying `stamp` (default `now`). The state is
         modelled once, each item in its fullest form; the wire profile's
         layout keeps the fields its variants have (reference.values), and an
         item not modelled here goes out at rest."""
@@ -518,7 +520,8 @@ class Simulator:
         q = euler_to_quaternion(v.roll, v.pitch, v.yaw)
         if bad:
             q = tuple(2 * c for c in q)
-        ticks = int((now - self.boot) * 400) & 0xFFFFFFFF
+        stamp = now if stamp is None else stamp
+        ticks = int((stamp - self.boot) * 400) & 0xFFFFFFFF
         if bad:
             ticks = (0x7FFFFFFF - ticks * 3) & 0xFFFFFFFF
         in_control = self.control == "onboard"
@@ -529,7 +532,7 @@ class Simulator:
         amsl = HOME_ALT + v.height
         date, tod = 20240601, 120000 + int(elapsed) % 60
         model = {
-            "time_stamp": {"time": ticks, "nano_time": time.monotonic_ns() & 0xFFFFFFFF, "sync_flag": 0},
+            "time_stamp": {"time": ticks, "nano_time": int(stamp * 1e9) & 0xFFFFFFFF, "sync_flag": 0},
             "quaternion": dict(zip(("q0", "q1", "q2", "q3"), q)),
             "acceleration": dict(zip("xyz", v.accel)),
             "velocity": {"x": v.vn, "y": v.ve, "z": v.vu, "data_valid": True, "sensor_id": 0, "reserved": 0},
@@ -561,12 +564,16 @@ class Simulator:
         self.seq = (self.seq + 1) & 0xFFFF
         return s
 
-    def emit_broadcast(self, now: float) -> None:
+    def emit_broadcast(self, now: float, stamp: float | None = None) -> None:
+        """One broadcast frame, its time stamp item saying `stamp`: when the
+        frame was due (a real FC's firmware composes it on its own clock; a
+        late wake-up of this process stands for delay on the way, not for an
+        FC that broke its cadence), the injected --jitter included."""
         items = self._due_items()
         self.frame_index += 1
         if not items:
             return
-        value = self.broadcast_value(items, now)
+        value = self.broadcast_value(items, now, stamp)
         seq = self._next_seq()
         frame = encode(cmd_set=2, cmd_id=0, value=value, seq=seq,
                        key=self.cfg.key if self.cfg.encrypt else None)
@@ -905,7 +912,8 @@ class Simulator:
                 continue
             if now >= self.send_at:
                 self._check_speed()
-                self.emit_broadcast(now)
+                self.last_stamp = max(self.send_at, self.last_stamp)   # injected jitter never runs the clock back
+                self.emit_broadcast(now, stamp=self.last_stamp)
                 self.next_frame += period
                 if self.next_frame < now - 0.25:   # fell far behind (suspended): do not burst
                     self.next_frame = now + period

@@ -1,0 +1,95 @@
+"""A busy host never turns a healthy flight controller red (issue 26): the
+passive checks that arrival times can fool judge the FC on its own time
+stamps, and say what the host did instead of blaming the FC.
+
+Streams here are built frame by frame: the FC's time stamps on a steady
+100 Hz clock (or not), and arrival times as a host delivers them (on time,
+in a late burst after it was not scheduled, or not at all for a while)."""
+from __future__ import annotations
+
+import pytest
+
+from osdk_conformance.core.wire import encode
+from osdk_conformance.device.analysis import Analyzer
+from osdk_conformance.device.checks import Options, passive_results
+from osdk_conformance.device.hostload import HostLoad
+from osdk_conformance.device.port import LinkState
+from osdk_conformance.sim.simulator import SimConfig, Simulator
+
+PROFILE = "a3-fw3.1"
+PERIOD = 0.01
+FRAMES = 500
+IDLE = HostLoad(cores=2, load1=0.3, cpu_s=0.4, wall_s=5.0)
+BUSY = HostLoad(cores=2, load1=4.2, cpu_s=0.9, wall_s=5.0)
+
+
+def run_checks(stamps: list[float], arrivals: list[float], host: HostLoad | None,
+               items: tuple[str, ...] | None = None) -> dict[str, tuple[str, str]]:
+    """The passive results of frames whose time stamp items say `stamps` and
+    which the host read at `arrivals` (all frames at 100 Hz)."""
+    sim = Simulator(SimConfig(profile=PROFILE), transport=None)
+    items = list(items or sim.profile.flag_bits)
+    rates = {i: (100 if i in items else 0) for i in sim.profile.flag_bits}
+    an = Analyzer(PROFILE, expect_rates=rates)
+    for seq, (stamp, t) in enumerate(zip(stamps, arrivals)):
+        an.feed_rx(t, encode(cmd_set=2, cmd_id=0, value=sim.broadcast_value(items, stamp, stamp), seq=seq))
+    an.finish()
+    link = LinkState(t_open=arrivals[0] - 0.05, t_end=arrivals[-1] + 0.02)
+    opts = Options(PROFILE, duration=arrivals[-1] - arrivals[0], host=host)
+    return {r.id: (r.status, r.message) for r in passive_results(an, opts, link)}
+
+
+def steady(n: int = FRAMES, t0: float = 100.0) -> list[float]:
+    return [t0 + k * PERIOD for k in range(n)]
+
+
+def host_paused(pause: float, at: int = 250) -> list[float]:
+    """Arrival times of a host that was not scheduled for `pause` s: the
+    frames sent meanwhile are read in one burst when it runs again."""
+    out = steady()
+    resume = out[at] + pause
+    return [max(t, resume) if k >= at and t < resume else t for k, t in enumerate(out)]
+
+
+@pytest.mark.parametrize("host", [BUSY, IDLE, None], ids=("busy", "idle", "replay"))
+def test_a_host_that_was_not_scheduled_does_not_fail_the_fc(host):
+    checks = run_checks(steady(), host_paused(0.3), host)
+    assert checks["stream.jitter"][0] == "pass", checks["stream.jitter"]
+    assert "FC time stamps spread" in checks["stream.jitter"][1]
+    assert "not the flight controller" in checks["stream.jitter"][1]
+    if host is not None:
+        assert f"load average {host.load1:.2f}" in checks["stream.jitter"][1]
+    assert checks["stream.rates"][0] == "pass", checks["stream.rates"]
+
+
+def test_a_silence_of_the_host_is_not_a_stall_of_the_fc():
+    checks = run_checks(steady(), host_paused(1.6), BUSY)
+    assert checks["link.stall"][0] == "pass", checks["link.stall"]
+    assert "the host read nothing for 1.6" in checks["link.stall"][1]
+    assert "kept sending" in checks["link.stall"][1]
+
+
+def test_an_fc_that_stops_sending_is_still_a_stall():
+    stamps = steady()
+    stamps = stamps[:250] + [t + 1.6 for t in stamps[250:]]   # its own clock shows the silence too
+    checks = run_checks(stamps, stamps, IDLE)
+    assert checks["link.stall"][0] == "fail" and "stalled" in checks["link.stall"][1]
+
+
+def test_an_fc_whose_own_time_stamps_jitter_fails_on_any_host():
+    stamps = [t + (0.04 if k % 7 == 3 else 0.0) for k, t in enumerate(steady())]
+    for host in (BUSY, IDLE):
+        checks = run_checks(stamps, stamps, host)
+        assert checks["stream.jitter"][0] == "fail", checks["stream.jitter"]
+        assert "the flight controller's own time stamps spread" in checks["stream.jitter"][1]
+
+
+def test_without_time_stamps_arrival_spread_is_judged_only_on_an_idle_host():
+    items = tuple(i for i in Simulator(SimConfig(profile=PROFILE), None).profile.flag_bits if i != "time_stamp")
+    arrivals = host_paused(0.3)
+    busy = run_checks(steady(), arrivals, BUSY, items)["stream.jitter"]
+    assert busy[0] == "skip" and "cannot be told from the host's" in busy[1] and "load average 4.20" in busy[1]
+    assert run_checks(steady(), arrivals, None, items)["stream.jitter"][0] == "skip"
+    idle = run_checks(steady(), arrivals, IDLE, items)["stream.jitter"]
+    assert idle[0] == "fail" and "on an idle host" in idle[1]
+    assert run_checks(steady(), steady(), BUSY, items)["stream.jitter"][0] == "pass"
