@@ -435,6 +435,13 @@ class SimConfig:
 DRAIN_SETTLE_S = 0.05
 DRAIN_STUCK_S = 1.0
 
+BEHIND_S = 2.0
+"""How late the run loop may fall behind its frame schedule and still send
+the frames it owes (stamped with the times they were due, in a burst): a
+process starved of CPU on a busy host stands for a healthy FC whose frames
+were delayed on the way. Further behind, it was suspended, and the frames in
+between are skipped as a halted FC would."""
+
 MAX_WAIT_S = 0.05
 """The longest the run loop sleeps in select(): a restart requested from a
 signal handler or another thread cannot wake it, so this bounds how late the
@@ -915,7 +922,7 @@ class Simulator:
                 self.last_stamp = max(self.send_at, self.last_stamp)   # injected jitter never runs the clock back
                 self.emit_broadcast(now, stamp=self.last_stamp)
                 self.next_frame += period
-                if self.next_frame < now - 0.25:   # fell far behind (suspended): do not burst
+                if self.next_frame < now - BEHIND_S:   # suspended, not merely starved: do not burst
                     self.next_frame = now + period
                 jitter = self.rng.uniform(0, cfg.jitter_ms / 1000.0) if cfg.jitter_ms else 0.0
                 self.send_at = self.next_frame + jitter
