@@ -10,11 +10,14 @@ with the mutation check. Last, it runs the serial acceptance suite against
 the simulated flight controller over a pseudo-terminal (report in
 reports/device.html, capture in reports/device.pcapng), and fuzzes it over
 one (`osdkc fuzz --port`: a healthy simulator survives every case kind; report
-in reports/fuzz.html, capture in reports/fuzz.pcapng).
+in reports/fuzz.html, capture in reports/fuzz.pcapng). With OSDK_SRC naming a
+checkout of DJI's Onboard-SDK, DJI's own host stack runs a whole session
+against the simulator too (`osdkc sdk host-test`).
 """
 from __future__ import annotations
 
 import argparse
+import os
 from typing import Callable, Sequence
 
 from kaitaistruct import BytesIO, KaitaiStream
@@ -33,6 +36,7 @@ from osdk_conformance.harness.runner import ALL, add_arguments as run_arguments,
 from osdk_conformance.harness.selftest import add_arguments as selftest_arguments, run_selftest
 from osdk_conformance.reference.decode import decode_events
 from osdk_conformance.reference.worked_examples import WORKED_FRAMES, WorkedFrame, lookup
+from osdk_conformance.sdk.host import add_arguments as host_test_arguments, run_host_test
 from osdk_conformance.sim.simulator import spawned
 from osdk_conformance.traceability.check import run_spec_check
 from osdk_conformance.traceability.trace import add_seed_argument
@@ -151,6 +155,10 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         status_readme.update(REPORTS / "conformance.json")
     for on_simulator in (_acceptance_on_simulator, _fuzz_on_simulator):
         ok = on_simulator() == 0
+        passed += ok
+        failed += not ok
+    if os.environ.get("OSDK_SRC"):   # DJI's own host stack from the user's checkout against the simulator
+        ok = _command("sdk host-test", host_test_arguments, run_host_test, "--osdk", os.environ["OSDK_SRC"]) == 0
         passed += ok
         failed += not ok
     print(f"reports: {REPORTS}/")

@@ -4,9 +4,9 @@ Without a checkout of DJI's Onboard-SDK the tests here check what the
 command does with trees it cannot use (exit 2 naming the reason), the
 field-by-field comparison, and the simulator's broadcast log it compares
 against, the refused-by-design and wire-ACK verdicts. With OSDK_SRC
-pointing at a checkout of 3.1.x or 3.3 to 3.9 they also build the SDK's
-host stack and run whole sessions (both baud rates, plain and encrypted),
-and interrupt one.
+pointing at a checkout of 2.3, 3.1.x, 3.2.x or 3.3 to 3.9 they also build
+the SDK's host stack and run whole sessions (both baud rates, plain and
+encrypted), and interrupt one.
 """
 from __future__ import annotations
 
@@ -29,7 +29,15 @@ from osdk_conformance.sim.simulator import spawned
 
 OSDK_SRC = os.environ.get("OSDK_SRC")
 needs_sdk = pytest.mark.skipif(not OSDK_SRC, reason="OSDK_SRC does not point at a checkout of DJI's Onboard-SDK "
-                                                     "(3.1.x or 3.3 to 3.9)")
+                                                     "(2.3, 3.1.x, 3.2.x or 3.3 to 3.9)")
+
+# Steps a release fails by its own defect, whatever the flight controller does, and
+# what the step's detail then says: 2.3's CoreAPI::setBroadcastFreq turns every code
+# of 5 or less into 0 before sending (lib/src/DJI_API.cpp:172-178).
+KNOWN_SDK_FAILURES = {
+    "2.3": {"frequencies": "CoreAPI::setBroadcastFreq sent codes 0,0,0,0,0,0,0,0,0,0,0,0 for the codes asked, 3,3,",
+            "frequency_restore": "CoreAPI::setBroadcastFreq sent codes 0,0,0,0,0,0,0,0,0,0,0,0 for the codes asked"},
+}
 
 
 def fake_tree(root: Path, version: str = "3.1.9", leave_out: str | None = None,
@@ -47,6 +55,20 @@ def fake_tree(root: Path, version: str = "3.1.9", leave_out: str | None = None,
                      "const Version versionA3_31 = (MAKE_VERSION(3, 1, 100, 0));\n"
                      + ("/* notifyCaller */\n" if rel.endswith("DJI_Link.cpp") else "")
                      + ("/* fwVersion */\n" if version == "3.2.2" and rel.endswith("DJI_Type.h") else ""))
+    return root
+
+
+def fake_tree_23(root: Path, leave_out: str | None = None, switches: tuple[str, ...] = ("SDK_VERSION_2_3",)) -> Path:
+    """A directory with the file names of 2.3 (lib/, no DJICommonType.h, the
+    command-line sample's serial driver) and a DJI_Config.h with `switches`."""
+    for rel in [*sdk_host.REQUIRED_23, "lib/inc/DJI_API.h"]:
+        if rel == leave_out:
+            continue
+        f = root / rel
+        f.parent.mkdir(parents=True, exist_ok=True)
+        f.write_text("/* file name only */\n")
+    (root / "lib/inc/DJI_Config.h").write_text("//#define SDK_VERSION_3_1_M100\n"   # a switch left off
+                                                + "".join(f"#define {name}\n" for name in switches))
     return root
 
 
@@ -85,10 +107,73 @@ def test_missing_file_is_exit_2_naming_it(tmp_path, capsys, layout):
         assert f"missing {missing}" in err   # the family's or host-test's own message, naming the file
 
 
-def test_unsupported_core_release_is_exit_2(tmp_path, capsys):
-    code, err = host_test(capsys, "--osdk", str(fake_tree(tmp_path, version="3.2.2")))
+@pytest.mark.parametrize("version, from_aircraft", [("3.2.0", False), ("3.2.2", True)])
+def test_32_releases_are_recognised_with_how_they_learn_the_version(tmp_path, version, from_aircraft):
+    tree = fake_tree(tmp_path, version=version)
+    inc = tmp_path / "osdk-core/inc"
+    if version == "3.2.0":   # what the core family tells 3.2.0 by
+        (inc / "DJI_Version.h").write_text((inc / "DJI_Version.h").read_text()
+                                           + "const Version versionA3_32 = (MAKE_VERSION(3, 2, 0, 0));\n")
+    else:                    # 3.2.1 and 3.2.2 take the firmware version from the version reply
+        (inc / "DJI_API.h").write_text("Version getFwVersion() const;\n")
+    found = sdk_host.detect(tree)
+    assert (found.family, found.version, found.driver.name) == ("core", version, "driver31.cpp")
+    assert found.profiles == ("m100-fw3.1", "a3-fw3.1")
+    assert ("OSDKC_FW_FROM_AIRCRAFT" in found.defines) is from_aircraft
+    assert found.sources[-1].name == "LinuxSerialDevice.cpp"
+
+
+def test_23_is_recognised_with_the_samples_serial_driver(tmp_path):
+    found = sdk_host.detect(fake_tree_23(tmp_path))
+    assert (found.family, found.version, found.driver.name) == ("core", "2.3", "driver23.cpp")
+    assert found.profiles == ("m100-fw2.3",)
+    assert found.sources[-1] == tmp_path / sdk_host.SERIAL_23 / "DJIHardDriverManifold.cpp"
+    assert tmp_path / sdk_host.SERIAL_23 in found.includes
+    # built with DJI_Config.h's other switch, the tree speaks FW 3.1 on an M100
+    assert sdk_host.detect(fake_tree_23(tmp_path / "31", switches=("SDK_VERSION_3_1_M100",))).profiles == ("m100-fw3.1",)
+
+
+@pytest.mark.parametrize("switches, found", [
+    ((), "it defines none"),
+    (("SDK_VERSION_2_3", "SDK_VERSION_3_1_M100"), "it defines SDK_VERSION_2_3 (line 2), SDK_VERSION_3_1_M100 (line 3)"),
+    (("SDK_VERSION_3_1_A3",), "it defines SDK_VERSION_3_1_A3 (line 2)"),
+])
+def test_23_config_without_one_usable_switch_is_exit_2(tmp_path, capsys, switches, found):
+    code, err = host_test(capsys, "--osdk", str(fake_tree_23(tmp_path, switches=switches)))
     assert code == 2
-    assert "Onboard-SDK 3.2.2 is not supported by sdk host-test" in err and "3.1.x and 3.3 to 3.9" in err
+    assert "lib/inc/DJI_Config.h must define exactly one of SDK_VERSION_2_3, SDK_VERSION_3_1_M100" in err
+    assert found in err
+
+
+def test_23_without_the_samples_serial_driver_is_exit_2(tmp_path, capsys):
+    missing = f"{sdk_host.SERIAL_23}/DJIHardDriverManifold.cpp"
+    code, err = host_test(capsys, "--osdk", str(fake_tree_23(tmp_path, leave_out=missing)))
+    assert code == 2
+    assert f"missing {missing}: the 2.3 host stack cannot be built (2.3's lib/ has no serial driver" in err
+
+
+def test_23_version_reply_has_no_id_and_a_missing_verdict_is_not_flagged():
+    name = "SDK-v1.0 BETA M100-02.03.01.00"
+    s = sdk_host.Session(steps={"version": {"ok": True, "detail": "ACK code 0xFF01"}},
+                         logs=[f"STATUS getVersionCallback,line 227: version name = {name}"], exit_code=1)
+    steps = {st.name: st for st in sdk_host._verdicts("m100-fw2.3", s, sdk_host.Comparison(), {}, 500, [ack(0, 0, 0xFF01)])}
+    assert steps["version"].verdict == "PASS", steps["version"].detail
+    assert steps["version"].detail.startswith(f"SDK read ID None (sent None), name '{name}'")
+    # the SDK's caller got no ACK in time: no verdict to weigh against the wire
+    late = {"ok": False, "sdk_ok": None, "detail": "no ACK within 2 s"}
+    ok, text, flagged = sdk_host.wire_check("frequencies", late, [ack(0, 0x10, 0)])
+    assert ok and not flagged and "no ACK reached the SDK's caller within 2 s" in text
+
+
+def test_32_version_is_checked_through_what_the_getters_read():
+    ev = {"ok": True, "detail": "ACK code 0xFF01", "version_id": "SIM-000001", "hw_version": "A3",
+          "fw_version": 0x03016400}
+    s = sdk_host.Session(steps={"version": ev}, exit_code=1)
+    steps = sdk_host._verdicts("a3-fw3.1", s, sdk_host.Comparison(), {}, 500, [ack(0, 0, 0xFF01)])
+    assert steps[0].verdict == "PASS", steps[0].detail
+    assert "hardware 'A3' and firmware 3.1.100.0 from the name 'SDK-v1.0 BETA A3-03.01.100.00'" in steps[0].detail
+    s.steps["version"] = dict(ev, fw_version=0)   # the SDK could not parse the name
+    assert sdk_host._verdicts("a3-fw3.1", s, sdk_host.Comparison(), {}, 500, [ack(0, 0, 0xFF01)])[0].verdict == "FAIL"
 
 
 @pytest.mark.parametrize("version, can_encrypt", [("3.3.2", False), ("3.6.1", True), ("3.9.0", True)])
@@ -319,7 +404,8 @@ def test_sdk_host_stack_runs_a_whole_session_on_every_profile(tmp_path, baud, en
                            "--out", str(tmp_path / "build"), "--baud", str(baud)] + (["--encrypt"] if encrypt else []),
                           capture_output=True, text=True, timeout=900)
     out = proc.stdout
-    assert proc.returncode == 0, out + proc.stderr
+    known = KNOWN_SDK_FAILURES.get(tree.version, {}) if not tree.bauds.get(baud) else {}
+    assert proc.returncode == (1 if known else 0), out + proc.stderr
     ran = 0
     for profile in tree.profiles:
         rest = out.split(profile + "\n", 1)[1].splitlines()
@@ -333,6 +419,10 @@ def test_sdk_host_stack_runs_a_whole_session_on_every_profile(tmp_path, baud, en
             continue
         ran += 1
         for step in sdk_host.STEPS:
+            if step in known:   # the release's own defect, with its evidence
+                line = next(x for x in block.splitlines() if x.startswith(f"  FAIL  {step} "))
+                assert known[step] in line, line
+                continue
             assert f"PASS  {step}" in block, block
         want_enc = 150 if encrypt and tree.can_encrypt else 0
         assert f"simulator received 150, {want_enc} of them encrypted" in block
@@ -359,7 +449,8 @@ def _control_device(log: Path, profile: str) -> int | None:
 def test_ctrl_c_in_movement_releases_control_restores_frequencies_and_stops_everything(tmp_path):
     logs = tmp_path / "logs"
     tree = sdk_host.detect(Path(OSDK_SRC).resolve())
-    profile = next(p for p in ("a3-fw3.1", "m100-fw3.1") if p in tree.profiles and p not in tree.refusals)
+    profile = next(p for p in ("a3-fw3.1", "m100-fw3.1", "m100-fw2.3") if p in tree.profiles and p not in tree.refusals)
+    restored = "FAIL" if "frequency_restore" in KNOWN_SDK_FAILURES.get(tree.version, {}) else "PASS"
     proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sdk", "host-test", "--osdk", OSDK_SRC,
                              "--out", str(tmp_path / "build"), "--log-dir", str(logs), "--profile", profile,
                              "--frames", "20", "--moves", "5000"],
@@ -376,7 +467,7 @@ def test_ctrl_c_in_movement_releases_control_restores_frequencies_and_stops_ever
             os.killpg(proc.pid, signal.SIGKILL)
     assert proc.returncode == 130, err
     assert "interrupted; release_control PASS" in err
-    assert "interrupted; frequency_restore PASS" in err
+    assert f"interrupted; frequency_restore {restored}" in err
     assert (logs / f"{profile}.sim-stats.json").is_file()   # the simulator stopped cleanly
     assert not processes_mentioning(str(tmp_path))   # neither the driver nor the simulator is left
 

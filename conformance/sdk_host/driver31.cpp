@@ -20,6 +20,14 @@
 // commands go out encrypted or plain. Broadcasts are reported from the
 // activation on (before it an encrypting aircraft's frames cannot be read).
 //
+// 3.2.x: the same core and serial driver. 3.2.0 still takes the SDK version
+// from the caller. 3.2.1 and 3.2.2 (OSDKC_FW_FROM_AIRCRAFT, set by host.py when
+// DJI_API.h declares getFwVersion) take no version: CoreAPI parses hardware,
+// firmware and serial number out of the version reply, and activation carries
+// that firmware word. Their getDroneVersionCallback logs nothing, so the version
+// step reports what the public getters read (getHwSerialNum, getHwVersion,
+// getFwVersion).
+//
 // SIGINT/SIGTERM: the session stops at the next step and still releases
 // control and restores the frequencies before exiting.
 
@@ -392,7 +400,11 @@ int main(int argc, char **argv) {
     return 1;
   }
 #endif
+#ifdef OSDKC_FW_FROM_AIRCRAFT
+  CoreAPI api(&serial, false);   // the version comes from the aircraft's version reply
+#else
   CoreAPI api(&serial, o.sdk_version, false);
+#endif
   Session session;
   session.api = &api;
   api.setBroadcastCallback(on_broadcast, &session);
@@ -409,8 +421,19 @@ int main(int argc, char **argv) {
   p.reset();
   api.getDroneVersion(on_version, &p);
   bool ok = p.wait(ACK_TIMEOUT_S);
+  std::string read_back;
+#ifdef OSDKC_FW_FROM_AIRCRAFT
+  if (ok) {
+    // what the SDK made of the reply: ID, hardware and firmware (0 when it could not parse it)
+    char fw[16];
+    snprintf(fw, sizeof fw, "%u", static_cast<unsigned>(api.getFwVersion()));
+    read_back = ",\"version_id\":" + json_string(std::string(api.getHwSerialNum(), strnlen(api.getHwSerialNum(), 16))) +
+                ",\"hw_version\":" + json_string(std::string(api.getHwVersion(), strnlen(api.getHwVersion(), 12))) +
+                ",\"fw_version\":" + fw;
+  }
+#endif
   step("version", ok, ok ? code_text(p) : "no ACK within 2 s",
-       ",\"value_length\":" + std::to_string(p.length) + ",\"sdk_code\":" + std::to_string(p.code));
+       ",\"value_length\":" + std::to_string(p.length) + ",\"sdk_code\":" + std::to_string(p.code) + read_back);
   all_ok &= ok;
 
   // activation with the app id and key

@@ -1,9 +1,10 @@
 """`osdkc sdk host-test`: DJI's own host stack against `osdkc sim`.
 
 The user points --osdk at a checkout of DJI's Onboard-SDK. Its core and its
-Linux serial driver are compiled, unchanged, together with our small driver
-program (conformance/sdk_host/driver31.cpp, public SDK API only) into a cache
-directory. For each profile the SDK supports, the driver then runs a whole
+Linux serial driver (2.3: the one of the release's command-line sample) are
+compiled, unchanged, together with our small driver program
+(conformance/sdk_host/driver23.cpp, driver31.cpp or driver_vehicle.cpp, public
+SDK API only) into a cache directory. For each profile the SDK supports, the driver then runs a whole
 session against a simulator on a pseudo-terminal: version, activation with
 app id and key, broadcast frequencies, ~500 broadcast frames that the SDK
 decodes and we compare field by field (IEEE bits for floats) with what the
@@ -37,13 +38,15 @@ from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import positive_int, uint32
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
+from osdk_conformance.sdk.families import protocol
+from osdk_conformance.sdk.testee_build import detect as detect_family
 from osdk_conformance.sim.simulator import VERSION_ID, VERSION_NAME, spawned
 from osdk_construct.floats import IeeeFloat
-from osdk_construct.payload import osdk_payload
+from osdk_construct.payload import has_version_id, osdk_payload
 
 DRIVER_DIR = ROOT / "conformance" / "sdk_host"
 KEY_ENV = "OSDKC_HOST_TEST_KEY"
-BAUDS = (230400, 921600)   # --baud choices; 3.1.x's Linux serial driver sets 230400 at most
+BAUDS = (230400, 921600)   # --baud choices; the Linux serial drivers of 2.3 to 3.2.x set 230400 at most
 BAUD = BAUDS[0]
 DEFAULT_APP_ID = 1010101
 HZ_CODE = {hz: code for code, hz in hz_of_code().items()}   # the set-frequency command's codes
@@ -72,7 +75,7 @@ class SdkTree:
 
 @dataclass(frozen=True)
 class Layout31:
-    """Where a 3.1.x release keeps the core and the Linux serial driver."""
+    """Where a 3.1.x or 3.2.x release keeps the core and the Linux serial driver."""
 
     inc: str
     src: str
@@ -91,10 +94,25 @@ class Layout31:
 
 
 LAYOUTS_31 = (
-    Layout31("osdk-core/inc", "osdk-core/src", "platform/linux/src", "platform/linux/inc"),   # 3.1.9
+    Layout31("osdk-core/inc", "osdk-core/src", "platform/linux/src", "platform/linux/inc"),   # 3.1.9, 3.2.x
     Layout31("lib/inc", "lib/src", "platform", "platform", ("OSDKC_INIT_SETS_NO_STATUS",)),   # 3.1.8
 )
-SUPPORTED = "3.1.x and 3.3 to 3.9"
+# 3.2.1 and 3.2.2 take the firmware version from the aircraft's version reply
+# (CoreAPI has no version argument any more); 3.2.0 still takes it from the caller.
+FW_FROM_AIRCRAFT = re.compile(r"\bgetFwVersion\s*\(")
+SUPPORTED = "2.3, 3.1.x, 3.2.x and 3.3 to 3.9"
+
+# 2.3: lib/ holds the core, the Linux serial driver is the command-line sample's.
+LIB_23 = ("lib/inc", "lib/src")
+SERIAL_23 = "sample/commandline/Linux/conboardSDK"
+REQUIRED_23 = ([f"lib/inc/{h}" for h in ("DJI_Version.h", "DJI_Config.h", "DJI_API.h", "DJI_Flight.h",
+                                         "DJI_Type.h", "DJI_HardDriver.h")]
+               + [f"lib/src/{c}" for c in ("DJI_API.cpp", "DJI_App.cpp", "DJI_Link.cpp", "DJI_Codec.cpp",
+                                           "DJI_Memory.cpp", "DJI_HardDriver.cpp", "DJI_Flight.cpp")]
+               + [f"{SERIAL_23}/DJIHardDriverManifold.h", f"{SERIAL_23}/DJIHardDriverManifold.cpp"])
+# DJI_Config.h's switch -> the profile it builds for (its SDK_VERSION in DJI_Version.h);
+# SDK_VERSION_3_1_A3 has no GPS or RTK item in 2.3's broadcast structure.
+SWITCHES_23 = {"SDK_VERSION_2_3": "m100-fw2.3", "SDK_VERSION_3_1_M100": "m100-fw3.1"}
 
 # 3.3 to 3.9 (the "protocol" family of `osdkc sdk build`): the Vehicle API,
 # compiled with the tree's Linux platform layer. Paths below osdk-core/.
@@ -161,7 +179,7 @@ def _detect_31(root: Path, version: str) -> SdkTree:
                          "lib/inc/DJI_Version.h: the 3.1.x host stack cannot be built")
     for rel in layout.required():
         if not (root / rel).is_file():
-            raise UsageError(f"--osdk {root}: missing {rel}: the 3.1.x host stack cannot be built")
+            raise UsageError(f"--osdk {root}: missing {rel}: the {version} host stack cannot be built")
     includes = [root / layout.inc, root / layout.serial_inc]
     version_h = (root / layout.inc / "DJI_Version.h").read_text(errors="replace")
     profiles = _profiles_of(version_h)
@@ -175,8 +193,6 @@ def _detect_31(root: Path, version: str) -> SdkTree:
 
 
 def _detect_vehicle(root: Path, version: str) -> SdkTree:
-    from osdk_conformance.sdk.families import protocol
-
     core = root / "osdk-core"
     for rel in VEHICLE_REQUIRED:
         if not (core / rel).is_file():
@@ -199,16 +215,40 @@ def _detect_vehicle(root: Path, version: str) -> SdkTree:
                    can_encrypt=can_encrypt)
 
 
+def _detect_23(root: Path, version: str) -> SdkTree:
+    for rel in REQUIRED_23:
+        if not (root / rel).is_file():
+            raise UsageError(f"--osdk {root}: missing {rel}: the 2.3 host stack cannot be built (2.3's lib/ has "
+                             f"no serial driver; a Linux program takes the sample's, {SERIAL_23})")
+    config = root / "lib" / "inc" / "DJI_Config.h"
+    text = config.read_text(errors="replace")
+    chosen = [(text[:m.start()].count("\n") + 1, m.group(1))
+              for m in re.finditer(r"^[ \t]*#[ \t]*define[ \t]+(SDK_VERSION_\w+)", text, re.M)]
+    profiles = tuple(SWITCHES_23[name] for _, name in chosen if name in SWITCHES_23)
+    if len(chosen) != 1 or len(profiles) != 1:
+        found = ", ".join(f"{name} (line {line})" for line, name in chosen) or "none"
+        raise UsageError(f"--osdk {root}: lib/inc/DJI_Config.h must define exactly one of "
+                         f"{', '.join(SWITCHES_23)}; it defines {found}")
+    serial = root / SERIAL_23 / "DJIHardDriverManifold.cpp"
+    sources = sorted((root / "lib" / "src").glob("*.cpp")) + [serial]
+    return SdkTree(root, version, profiles, sources, [root / "lib" / "inc", root / SERIAL_23],
+                   DRIVER_DIR / "driver23.cpp", family="core", bauds=serial_rates(root, serial))
+
+
 def detect(root: Path) -> SdkTree:
     """The release family as `osdkc sdk build` recognises it (sdk/families/),
     then what host-test builds of it."""
-    from osdk_conformance.sdk.testee_build import detect as detect_family
-
     recipe = detect_family(root)
     if recipe.family == "protocol":
         return _detect_vehicle(root, recipe.version)
-    if recipe.version.startswith("3.1."):
-        return _detect_31(root, recipe.version)
+    if recipe.version == "2.3":
+        return _detect_23(root, recipe.version)
+    if recipe.version.startswith(("3.1.", "3.2.")):
+        tree = _detect_31(root, recipe.version)
+        api_h = tree.includes[0] / "DJI_API.h"
+        if FW_FROM_AIRCRAFT.search(api_h.read_text(errors="replace")):
+            tree.defines += ("OSDKC_FW_FROM_AIRCRAFT",)
+        return tree
     raise UsageError(f"--osdk {root}: DJI Onboard-SDK {recipe.version} is not supported by sdk host-test; "
                      f"supported: {SUPPORTED}")
 
@@ -497,6 +537,10 @@ def compare(profile: str, sent_log: Path, decoded: list[dict], exposed: list[str
 # Verdicts
 
 
+def _dotted(version: int) -> str:
+    return ".".join(str(version >> shift & 0xFF) for shift in (24, 16, 8, 0))
+
+
 def _why_stopped(s: Session) -> str:
     opened = s.steps.get("open")
     if opened and not opened["ok"]:
@@ -552,7 +596,9 @@ def wire_check(step: str, ev: dict, acks: list[dict]) -> tuple[bool, str, bool]:
     text = f"wire: ACK {', '.join(f'0x{c:04X}' for c in codes)} ({enc} of {len(got)} encrypted)"
     flagged = False
     sdk_ok = ev.get("sdk_ok", ev.get("ok"))
-    if sdk_ok != wire_ok:
+    if "sdk_ok" in ev and sdk_ok is None:   # the SDK's caller got no ACK in time: no verdict to weigh
+        text += "; no ACK reached the SDK's caller within 2 s"
+    elif sdk_ok != wire_ok:
         flagged = True
         text += (f"; {FLAG}: the SDK reports {'success' if sdk_ok else 'failure'} where the wire's "
                  f"0x{codes[-1]:04X} means {'success' if wire_ok else 'failure'}")
@@ -586,7 +632,7 @@ def _verdicts(profile: str, s: Session, cmp: Comparison, stats: dict, frames: in
                             f"{rejected} frames rejected, {garbage} bytes outside frames"))
             continue
         if by_design and name != "version":
-            detail = f"{refusal}; SDK: {activation.get('detail', '')}" if name == "activation" else refusal
+            detail = f"{refusal}; {activation.get('detail', '')}" if name == "activation" else refusal
             out.append(Step(name, "SKIP", detail))
             continue
         if ev is None:
@@ -602,10 +648,21 @@ def _verdicts(profile: str, s: Session, cmp: Comparison, stats: dict, frames: in
             got_name = ev.get("version_name", next((t.split("version name = ", 1)[1] for t in s.logs
                                                     if "version name = " in t), None))
             want_name = VERSION_NAME[profile].decode()
-            want_id = VERSION_ID.decode()
-            ok = ok and got_id == want_id and got_name == want_name
-            detail = (f"SDK read ID {got_id!r} (sent {want_id!r}), name {got_name!r} (sent {want_name!r}); "
-                      f"{detail}")
+            want_id = VERSION_ID.decode() if has_version_id(profile) else None   # FW 2.3's reply has no ID
+            if "fw_version" in ev:
+                # 3.2.1 and 3.2.2 keep the name to themselves: their getters give the ID and the
+                # hardware and firmware they parsed out of the name ("... M100-03.01.01.00")
+                want_hw = want_name.rsplit(" ", 1)[-1].split("-", 1)[0]
+                want_fw = load_profile(profile).sdk_version
+                got_hw, got_fw = ev.get("hw_version"), ev["fw_version"]
+                ok = ok and got_id == want_id and got_hw == want_hw and got_fw == want_fw
+                detail = (f"SDK read ID {got_id!r} (sent {want_id!r}), hardware {got_hw!r} and firmware "
+                          f"{_dotted(got_fw)} from the name {want_name!r} (want {want_hw!r}, "
+                          f"{_dotted(want_fw)}, the profile's SDK version); {detail}")
+            else:
+                ok = ok and got_id == want_id and got_name == want_name
+                detail = (f"SDK read ID {got_id!r} (sent {want_id!r}), name {got_name!r} (sent {want_name!r}); "
+                          f"{detail}")
         elif name == "broadcast":
             ok = ok and cmp.compared >= frames and cmp.mismatched_frames == 0 and cmp.unknown == 0 and cmp.lost == 0
             detail = (f"{cmp.compared} frames compared field by field ({cmp.fields} fields; items "
