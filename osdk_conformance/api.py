@@ -195,7 +195,8 @@ class Event:
     def value(self) -> Any:
         """The decoded value of a frame: the body of a plain command (for a
         broadcast `{"data": {...}}`), or an ACK's value when the ACK was
-        matched to its command; None for anything else (header-only,
+        matched to its command ({"raw": ""}-like for a matched header-only
+        ACK); None for anything else (header-only frames not matched,
         encrypted, an unmatched ACK, an error, garbage)."""
         if self.ack_of is not None:
             return self.ack

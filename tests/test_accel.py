@@ -174,10 +174,10 @@ def test_the_native_module_refuses_what_it_cannot_use() -> None:
     module = accel._import()[0]
     assert module is not None
     with pytest.raises(TypeError):
-        module.Decoder(1, None, 10)
-    with pytest.raises(ValueError):
-        module.Decoder(1, len, 0)
-    decoder = module.Decoder(1, len, 4)
+        module.Decoder(1, None)
+    with pytest.raises(TypeError):
+        module.Decoder(1, len, 4)  # no pending limit any more: one ACK slot per session (ERRATA E32)
+    decoder = module.Decoder(1, len)
     with pytest.raises(TypeError):
         decoder.feed("not bytes")
     with pytest.raises(ValueError, match="direction"):
@@ -198,11 +198,11 @@ def test_the_native_decoder_cannot_be_fed_from_inside_itself_or_before_init() ->
         decoder.feed(raw)  # the deframer is in the middle of its own callback
         return {}
 
-    decoder = module.Decoder(1, header_fields_that_feeds_again, 4)
+    decoder = module.Decoder(1, header_fields_that_feeds_again)
     with pytest.raises(RuntimeError, match="already decoding"):
         decoder.feed(short_broadcast)
     # still usable afterwards, and an error event is what a well-behaved header_fields gives
-    decoder.__init__(1, lambda raw: {"len": len(raw)}, 4)
+    decoder.__init__(1, lambda raw: {"len": len(raw)})
     (event,) = decoder.feed(short_broadcast)
     assert event["error"] == "truncated_payload" and event["frame_header"] == {"len": len(short_broadcast)}
     with pytest.raises(RuntimeError, match="__init__"):

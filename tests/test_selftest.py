@@ -42,7 +42,8 @@ def osdkc(*args: str, timeout: float = 600) -> subprocess.CompletedProcess:
 # fail many vectors, not a handful (a class closed case by case would not).
 BUG_CLASS_MUTANTS = {
     "value_error_rescans_after_sof", "truncated_tail_no_rescan", "ack_repeat_matched", "ack_match_seq_only",
-    "ack_last_command_only", "ack_first_command_kept", "ack_rejected_command_remembered", "ack_header_only_consumes",
+    "ack_last_command_only", "ack_first_command_kept", "ack_rejected_command_remembered", "ack_header_only_ignored",
+    "ack_table_by_key", "ack_other_seq_consumes",
     "crc16_checked_last", "len_checked_before_ver", "reserved_checked_before_ver", "enc_checked_before_session",
     "size_checked_before_header", "session_enc_in_header_check", "movement_mode_before_length",
     "movement_non_finite_before_mode", "len_takes_a_ver_bit", "ver_takes_a_len_bit", "ver_takes_a_session_bit",

@@ -29,7 +29,6 @@ from osdk_conformance.core.errors import UsageError
 from osdk_conformance.device import wireshark
 from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.harness.vectors import load_cases
-from osdk_conformance.reference.accel import PENDING_LIMIT
 
 ROOT = Path(__file__).resolve().parents[1]
 LUA = ROOT / "generated" / "wireshark" / "osdk.lua"
@@ -427,7 +426,8 @@ def assert_dissected_as_decoded(capture: Path, records: list[Record], profile: s
 
 def _session_commands(profile: str) -> list[tuple[bytes, str]]:
     """A version query, an activation, a set frequency and a control
-    authority request, as the SDK sends them: sessions 1-31, distinct seqs."""
+    authority request, as the SDK sends them: sessions 2-31 (each with an ACK
+    slot, ERRATA E32), distinct seqs."""
     prof = load_profile(profile)
     values = [
         ((0x00, 0x00), {"arbitrary": 1}, "version_query"),
@@ -439,7 +439,7 @@ def _session_commands(profile: str) -> list[tuple[bytes, str]]:
     out = []
     for n, ((cmd_set, cmd_id), body, name) in enumerate(values):
         value = osdk_construct.osdk_payload(cmd_set, cmd_id, False, prof.value).build({"body": body})
-        frame = api.encode_frame(cmd_set=cmd_set, cmd_id=cmd_id, value=value, session=(1, 2, 31, 17)[n],
+        frame = api.encode_frame(cmd_set=cmd_set, cmd_id=cmd_id, value=value, session=(3, 2, 31, 17)[n],
                                  seq=(300, 7, 4242, 65535)[n])
         out.append((frame, name))
     return out
@@ -488,12 +488,15 @@ def test_simulator_session_acks_match_osdkc_decode_both(profile: str, tmp_path: 
     assert any(e.command == "broadcast" for e in events)
 
 
-def test_acks_without_their_command_stay_unmatched(tmp_path: Path) -> None:
-    # An ACK before any command; a command's ACK twice (the second finds the
-    # table empty); an ACK of a command forgotten because PENDING_LIMIT newer
-    # ones came after it, although it was sent again (a re-sent key keeps its
-    # place); the ACK of the oldest one still remembered; a session-0
-    # command's seq answered; an ACK value too short for its command's layout.
+def test_acks_are_matched_one_slot_per_session(tmp_path: Path) -> None:
+    # ERRATA E32: an ACK before any command; a command's ACK twice (the
+    # second finds the slot empty); a session-0 command's seq answered; a
+    # session-1 command answered (never matched); a command replaced in its
+    # session's slot by another with the same SEQ (the ACK is the later
+    # one's) and one by another SEQ (an ACK of the first SEQ is not
+    # matched); an ACK value too short for its command's layout; a
+    # header-only ACK (matched, its empty value too short) and the full ACK
+    # after it (not matched).
     profile = "a3-fw3.1"
     query = osdk_construct.osdk_payload(0, 0, False, 2).build({"body": {"arbitrary": 0}})
 
@@ -504,21 +507,26 @@ def test_acks_without_their_command_stay_unmatched(tmp_path: Path) -> None:
         return api.encode_frame(is_ack=True, session=session, seq=seq, value=value)
 
     records: list[Record] = [("rx", ack(3, 1)), ("tx", command(3, 2)), ("rx", ack(3, 2, b"\x01\x00" + bytes(47))),
-                             ("rx", ack(3, 2)), ("tx", command(0, 9)), ("rx", ack(1, 9))]
-    records += [("tx", command(5, 0, (0x00, 0x10), bytes(16)))]
-    records += [("tx", command(6, seq)) for seq in range(PENDING_LIMIT - 1)]
-    records += [("tx", command(5, 0)), ("tx", command(7, 0)), ("rx", ack(5, 0)), ("rx", ack(6, 0, b"\x01"))]
+                             ("rx", ack(3, 2)), ("tx", command(0, 9)), ("rx", ack(1, 9)),
+                             ("tx", command(1, 4)), ("rx", ack(1, 4))]
+    records += [("tx", command(5, 0, (0x00, 0x10), bytes(16))), ("tx", command(6, 0)), ("tx", command(6, 1)),
+                ("tx", command(5, 0)), ("tx", command(7, 0)), ("rx", ack(5, 0, bytes(49))), ("rx", ack(6, 0)),
+                ("rx", ack(6, 1, b"\x01")), ("tx", command(8, 3)), ("rx", ack(8, 3, b"")), ("rx", ack(8, 3))]
     capture = write_records(tmp_path / "acks.pcapng", records)
     events, packets = assert_dissected_as_decoded(capture, records, profile, tmp_path)
     acks = [e for e in events if e.direction == "rx"]
-    assert [e.ack_of for e in acks] == [None, "version_query", None, None, None, "version_query"]
-    assert [e.kind for e in acks] == ["frame"] * 5 + ["error"]
-    assert acks[-1].error == "truncated_payload"
-    unmatched = [packets[i][0] for i in (0, 3, 5)]
+    assert [e.ack_of for e in acks] == [None, "version_query", None, None, None, "version_query", None,
+                                        "version_query", "version_query", None]
+    assert [e.kind for e in acks] == ["frame"] * 7 + ["error", "error", "frame"]
+    assert acks[7].error == acks[8].error == "truncated_payload" and acks[8].length == 12
+    unmatched = [packets[i][0] for i, (d, raw) in enumerate(records) if d == "rx" and len(raw) > 12
+                 and i not in (2, 13, 15)]
+    assert len(unmatched) == 6
     for tree in unmatched:
         assert "osdk.ack_value" in tree and "osdk.ack_of" not in tree
         assert not any(".ack." in name for name in tree), sorted(tree)
     assert packets[2][0]["osdk.version_query.ack.ack_code"] == ["1"]
+    assert packets[17][0]["osdk.ack_of"] == ["version_query"]  # the header-only ACK
 
 
 def test_raw_bytes_through_text2pcap_show_what_osdkc_decode_shows(tmp_path: Path) -> None:

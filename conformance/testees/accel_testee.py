@@ -25,7 +25,7 @@ from typing import Any, Callable, Iterable, Iterator, Sequence
 from osdk_conformance.core.deframe import header_fields, split_chunks
 from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.harness.serve import serve
-from osdk_conformance.reference.accel import MODULE, PENDING_LIMIT
+from osdk_conformance.reference.accel import MODULE
 
 NAME = "osdk-accel"
 PROFILES = profile_names()
@@ -68,7 +68,7 @@ def _byte(req: dict, key: str) -> int:
 
 def stream_events(module: ModuleType, chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
     """decode_stream's events, one read after another (also the bench mode's loop)."""
-    decoder = module.Decoder(load_profile(profile).value, header_fields, PENDING_LIMIT)
+    decoder = module.Decoder(load_profile(profile).value, header_fields)
     for chunk in chunks:
         yield from decoder.feed(chunk)
     yield from decoder.finish()

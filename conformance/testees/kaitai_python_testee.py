@@ -14,8 +14,9 @@ and its encoders answer encode_movement_control (float arguments as
 Float32Bits, bit for bit) and encode_frame. What is left here is what the
 testee protocol asks beyond the library:
 
-- ACK matching in streams (an ACK's value is typed by the command with the
-  same session and SEQ seen earlier) and chunking of the input.
+- ACK matching in streams (one slot per session 2..31: an ACK's value, a
+  header-only ACK's empty one too, is typed by the command waiting in its
+  session's slot with its SEQ; ERRATA E32) and chunking of the input.
 - Control mode classification and input ranges: osdk_conformance.core.rules
   (rules.yaml), applied to what OsdkControlMode / OsdkMovementControl read.
 - The JSON value model: osdk_conformance.core.model.from_kaitai.
@@ -67,7 +68,7 @@ OPERATIONS = ("decode_stream", "decode_frame", "decode_payload", "classify_contr
 NO_PROFILE = ("encode_movement_control", "encode_frame")  # their requests carry none
 
 AXIS_RANGE = {"x": "horizontal", "y": "horizontal", "z": "vertical", "yaw": "yaw"}
-PENDING_LIMIT = 1024  # unanswered commands remembered for ACK matching
+ACK_SESSIONS = range(2, 32)  # sessions with an ACK slot (PROTOCOL.md "ACK matching")
 MOVEMENT_CONTROL = osdk_kaitai.COMMANDS["movement_control"]
 _HEX = re.compile(r"(?:[0-9a-fA-F]{2})*")
 _F32 = re.compile(r"0x[0-9a-f]{8}")
@@ -267,7 +268,7 @@ class StreamDecoder:
     def __init__(self, profile: str, models: bool = True) -> None:
         self.profile = profile
         self.models = models
-        self.pending: dict[tuple[int, int], tuple[int, int]] = {}
+        self.slots: dict[int, tuple[int, int, int]] = {}  # session -> (seq, cmd_set, cmd_id) waiting for its ACK
 
     def event(self, ev: osdk_kaitai.Event) -> dict:
         if ev.kind == "garbage":
@@ -287,23 +288,22 @@ class StreamDecoder:
     def _frame(self, ev: osdk_kaitai.Event) -> dict:
         f = osdk_kaitai.decode_frame(ev.raw, self.profile)
         out: dict[str, Any] = {"offset": ev.offset, "kind": "frame"}
-        if not f.header_only and isinstance(f.data, OsdkFrame.FrameData):
-            if f.is_ack:
-                key = (f.session, f.seq)
-                if key in self.pending:
-                    cmd_set, cmd_id = self.pending.pop(key)
-                    out["ack_of"] = command_name(cmd_set, cmd_id)
-                    raw = f.data.ack_value
-                    try:
-                        ack = osdk_kaitai.decode_payload(raw, cmd_set, cmd_id, True, self.profile)
-                    except OsdkError as e:
-                        return {"offset": ev.offset, "kind": "error", "error": e.error_class, "detail": e.detail,
-                                "length": ev.length, "ack_of": out["ack_of"]}
-                    out["ack"] = body_model(ack, raw) if self.models else ack
-            elif f.session > 0:
-                self.pending[(f.session, f.seq)] = (f.data.cmd_set_code, f.data.cmd_id)
-                if len(self.pending) > PENDING_LIMIT:
-                    self.pending.pop(next(iter(self.pending)))
+        plain = not f.header_only and isinstance(f.data, OsdkFrame.FrameData)
+        if f.is_ack and (plain or f.header_only) and f.session in ACK_SESSIONS:
+            waiting = self.slots.get(f.session)
+            if waiting is not None and waiting[0] == f.seq:
+                del self.slots[f.session]
+                _, cmd_set, cmd_id = waiting
+                out["ack_of"] = command_name(cmd_set, cmd_id)
+                raw = f.data.ack_value if plain else b""  # a header-only ACK's value is empty
+                try:
+                    ack = osdk_kaitai.decode_payload(raw, cmd_set, cmd_id, True, self.profile)
+                except OsdkError as e:
+                    return {"offset": ev.offset, "kind": "error", "error": e.error_class, "detail": e.detail,
+                            "length": ev.length, "ack_of": out["ack_of"]}
+                out["ack"] = body_model(ack, raw) if self.models else ack
+        elif not f.is_ack and plain and f.session in ACK_SESSIONS:
+            self.slots[f.session] = (f.seq, f.data.cmd_set_code, f.data.cmd_id)
         out["frame"] = frame_model(f, ev.raw) if self.models else f
         return out
 

@@ -2,52 +2,31 @@
 /* osdk_acks.c - see osdk_acks.h. */
 #include "osdk_acks.h"
 
-#include <string.h>
-
-void osdk_ack_table_init(osdk_ack_table_t *t, osdk_pending_t *items, size_t limit)
+void osdk_acks_init(osdk_acks_t *t)
 {
-    t->items = items;
-    t->count = 0;
-    t->limit = limit;
+    unsigned i;
+    for (i = 0; i < OSDK_ACK_SESSIONS; i++) t->slot[i].waiting = false;
 }
 
-static long find(const osdk_ack_table_t *t, uint8_t session, uint16_t seq)
+void osdk_acks_command(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id)
 {
-    size_t i;
-    for (i = 0; i < t->count; i++) {
-        if (t->items[i].session == session && t->items[i].seq == seq) return (long)i;
-    }
-    return -1;
+    osdk_ack_slot_t *s;
+    if (session < OSDK_ACK_FIRST_SESSION || session >= OSDK_ACK_SESSIONS) return;
+    s = &t->slot[session];
+    s->seq = seq;
+    s->cmd_set = cmd_set;
+    s->cmd_id = cmd_id;
+    s->waiting = true;
 }
 
-static void remove_at(osdk_ack_table_t *t, size_t i)
+bool osdk_acks_take(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t *cmd_set, uint8_t *cmd_id)
 {
-    memmove(&t->items[i], &t->items[i + 1], (t->count - i - 1) * sizeof t->items[0]);
-    t->count--;
-}
-
-void osdk_ack_table_put(osdk_ack_table_t *t, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id)
-{
-    long at = find(t, session, seq);
-    if (at >= 0) {
-        t->items[at].cmd_set = cmd_set;
-        t->items[at].cmd_id = cmd_id;
-        return;
-    }
-    t->items[t->count].session = session;
-    t->items[t->count].seq = seq;
-    t->items[t->count].cmd_set = cmd_set;
-    t->items[t->count].cmd_id = cmd_id;
-    t->count++;
-    if (t->count > t->limit) remove_at(t, 0);
-}
-
-bool osdk_ack_table_take(osdk_ack_table_t *t, uint8_t session, uint16_t seq, uint8_t *cmd_set, uint8_t *cmd_id)
-{
-    long at = find(t, session, seq);
-    if (at < 0) return false;
-    *cmd_set = t->items[at].cmd_set;
-    *cmd_id = t->items[at].cmd_id;
-    remove_at(t, (size_t)at);
+    osdk_ack_slot_t *s;
+    if (session < OSDK_ACK_FIRST_SESSION || session >= OSDK_ACK_SESSIONS) return false;
+    s = &t->slot[session];
+    if (!s->waiting || s->seq != seq) return false;
+    *cmd_set = s->cmd_set;
+    *cmd_id = s->cmd_id;
+    s->waiting = false;
     return true;
 }

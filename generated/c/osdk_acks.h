@@ -1,42 +1,44 @@
 /* Generated from spec/ by tools/cgen/generate.py. Do not edit. */
 /*
  * osdk_acks.h - matching ACKs to the commands they answer, in a stream
- * (conformance/PROTOCOL.md, "ACK matching"): a command sent in a session
- * (SESSION > 0) waits under its (SESSION, SEQ) until an ACK frame with the
- * same pair arrives. The table is bounded: a command whose key is already
- * waiting keeps its place and takes the new command set and id; past the
- * limit the oldest is forgotten. No heap: the caller supplies the entries.
+ * (conformance/PROTOCOL.md, "ACK matching"; ERRATA E32), as DJI's receivers
+ * do: one slot per session 2..31. A plain command that decoded, in one of
+ * those sessions, takes its session's slot (replacing whatever waited
+ * there); an ACK in that session with the same SEQ is matched and empties
+ * the slot. Sessions 0 and 1 have no slot: their commands wait for nothing
+ * and their ACKs are never matched. No heap: the caller holds the slots.
  */
 #ifndef OSDK_ACKS_H
 #define OSDK_ACKS_H
 
 #include <stdbool.h>
-#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
+#define OSDK_ACK_FIRST_SESSION 2u /* sessions OSDK_ACK_FIRST_SESSION..31 have a slot */
+#define OSDK_ACK_SESSIONS 32u
+
 typedef struct {
-    uint8_t session;
     uint16_t seq;
     uint8_t cmd_set;
     uint8_t cmd_id;
-} osdk_pending_t;
+    bool waiting; /* a command is in the slot */
+} osdk_ack_slot_t;
 
 typedef struct {
-    osdk_pending_t *items; /* limit + 1 entries, oldest first */
-    size_t count;
-    size_t limit;
-} osdk_ack_table_t;
+    osdk_ack_slot_t slot[OSDK_ACK_SESSIONS]; /* indexed by session; 0 and 1 unused */
+} osdk_acks_t;
 
-/* items must hold limit + 1 entries; limit at least 1. */
-void osdk_ack_table_init(osdk_ack_table_t *t, osdk_pending_t *items, size_t limit);
-/* A command sent in a session (callers skip session 0, which is never ACKed). */
-void osdk_ack_table_put(osdk_ack_table_t *t, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id);
-/* The command an ACK of (session, seq) answers, taken off the table; false when none waits. */
-bool osdk_ack_table_take(osdk_ack_table_t *t, uint8_t session, uint16_t seq, uint8_t *cmd_set, uint8_t *cmd_id);
+/* Every slot empty. */
+void osdk_acks_init(osdk_acks_t *t);
+/* A plain command frame that decoded: it takes its session's slot (nothing happens in sessions 0 and 1). */
+void osdk_acks_command(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id);
+/* A plain ACK frame (header-only ones too): the command it answers, taken out of its session's slot;
+ * false when its session has no slot, the slot is empty or holds another SEQ (the slot then stays). */
+bool osdk_acks_take(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t *cmd_set, uint8_t *cmd_id);
 
 #ifdef __cplusplus
 }

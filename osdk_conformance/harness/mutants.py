@@ -43,7 +43,7 @@ from osdk_conformance.core import crc, deframe, rules
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import HEADER_LEN, Rejected, header_fields
 from osdk_conformance.core.rules import classify_control_mode
-from osdk_conformance.reference import codec as reference, decode
+from osdk_conformance.reference import accel, codec as reference, decode
 from osdk_conformance.reference.decode import Decoder
 from osdk_construct import broadcast as b, broadcast_items as items, floats, frame, payload
 from osdk_construct.enums import CONTROL_ACK, ENCRYPTION, enum_int
@@ -407,22 +407,23 @@ def _ack_matching_disabled() -> None:
 
     def _frame(self, ev):
         out = original(self, ev)
-        self._pending.clear()
+        self._slots.clear()
         return out
 
     Decoder._frame = _frame
 
 
-@_mutant("session1_ack_ignored", "ACKs in session 1 are not matched to their command (the SDK 3.1.9 receiver's "
-         "blind spot)", "E24", "rule:stream.ack_match")
-def _session1_ack_ignored() -> None:
-    original = Decoder._frame
+@_mutant("session1_ack_matched", "session 1 has an ACK slot too: its ACKs are matched like any other session's "
+         "(what the doc suggests, not what DJI's receivers do)", "E24", "E32", "rule:stream.ack_match")
+def _session1_ack_matched() -> None:
+    original = Decoder._expect_ack
 
-    def _frame(self, ev):
-        self._pending = {k: v for k, v in self._pending.items() if k[0] != 1}
-        return original(self, ev)
+    def _expect_ack(self, session, seq, cmd):
+        if session == 1:
+            self._slots[1] = (seq, *cmd)
+        original(self, session, seq, cmd)
 
-    Decoder._frame = _frame
+    Decoder._expect_ack = _expect_ack
 
 
 # ============================================================== broadcast
@@ -741,13 +742,13 @@ def _truncated_tail_no_rescan() -> None:
 
 
 def _on_decoded_frames(fn: Callable[[Any, Any, dict, dict], dict]) -> None:
-    """ACK matching after each frame: fn(decoder, frame event, pending table
-    before, answer) returns the answer and may change decoder._pending."""
+    """ACK matching after each frame: fn(decoder, frame event, slots before,
+    answer) returns the answer and may change decoder._slots."""
 
     original = Decoder._frame
 
     def _frame(self, ev):
-        before = dict(self._pending)
+        before = dict(self._slots)
         return fn(self, ev, before, original(self, ev))
 
     Decoder._frame = _frame
@@ -762,7 +763,7 @@ def _header(ev) -> dict:
 def _ack_repeat_matched() -> None:
     def keep(decoder, ev, before, out):
         if "ack_of" in out:
-            decoder._pending = before
+            decoder._slots = before
         return out
 
     _on_decoded_frames(keep)
@@ -770,75 +771,99 @@ def _ack_repeat_matched() -> None:
 
 @_mutant("ack_match_seq_only", "ACKs matched to commands by SEQ alone (the session is ignored)", "rule:stream.ack_match")
 def _ack_match_seq_only() -> None:
-    class BySeq(dict):
-        @staticmethod
-        def _k(key):
-            return key[1] if isinstance(key, tuple) else key
+    def _take_ack(self, session, seq):
+        for s, waiting in self._slots.items():
+            if waiting[0] == seq:
+                del self._slots[s]
+                return waiting[1:]
+        return None
 
-        def __contains__(self, key):
-            return super().__contains__(self._k(key))
-
-        def __setitem__(self, key, value):
-            super().__setitem__(self._k(key), value)
-
-        def pop(self, key, *default):
-            return super().pop(self._k(key), *default)
-
-    original = Decoder.__init__
-
-    def __init__(self, *a, **kw):
-        original(self, *a, **kw)
-        self._pending = BySeq()
-
-    Decoder.__init__ = __init__
+    Decoder._take_ack = _take_ack
 
 
-@_mutant("ack_last_command_only", "only the latest command is remembered (one slot instead of a table)",
-         "rule:stream.ack_match")
+@_mutant("ack_last_command_only", "only the latest command waits (one slot for all sessions instead of one per "
+         "session)", "rule:stream.ack_match", "E32")
 def _ack_last_command_only() -> None:
     def one_slot(decoder, ev, before, out):
-        added = [k for k in decoder._pending if k not in before or decoder._pending[k] != before[k]]
+        added = [k for k in decoder._slots if k not in before or decoder._slots[k] != before[k]]
         if added:
-            decoder._pending = {added[-1]: decoder._pending[added[-1]]}
+            decoder._slots = {added[-1]: decoder._slots[added[-1]]}
         return out
 
     _on_decoded_frames(one_slot)
 
 
-@_mutant("ack_first_command_kept", "a second command with the same session and SEQ does not replace the first one",
-         "rule:stream.ack_match")
+@_mutant("ack_first_command_kept", "a second command in a session whose slot holds one does not take the slot",
+         "rule:stream.ack_match", "E32")
 def _ack_first_command_kept() -> None:
     def first_wins(decoder, ev, before, out):
         for k, cmd in before.items():
-            if k in decoder._pending:
-                decoder._pending[k] = cmd
+            if k in decoder._slots:
+                decoder._slots[k] = cmd
         return out
 
     _on_decoded_frames(first_wins)
 
 
-@_mutant("ack_rejected_command_remembered", "a command whose value does not decode is still remembered for its ACK",
+@_mutant("ack_table_by_key", "commands wait under their (SESSION, SEQ), several per session (the kit's former "
+         "table): a later command with another SEQ does not take the first one's place", "rule:stream.ack_match",
+         "E32")
+def _ack_table_by_key() -> None:
+    def _expect_ack(self, session, seq, cmd):
+        if session in accel.ACK_SESSIONS:
+            self._slots[(session, seq)] = (seq, *cmd)
+
+    def _take_ack(self, session, seq):
+        waiting = self._slots.pop((session, seq), None)
+        return None if waiting is None else waiting[1:]
+
+    Decoder._expect_ack = _expect_ack
+    Decoder._take_ack = _take_ack
+
+
+@_mutant("ack_other_seq_consumes", "an ACK in a session whose slot holds another SEQ empties the slot",
+         "rule:stream.ack_match", "E32")
+def _ack_other_seq_consumes() -> None:
+    original = Decoder._take_ack
+
+    def _take_ack(self, session, seq):
+        found = original(self, session, seq)
+        self._slots.pop(session, None)
+        return found
+
+    Decoder._take_ack = _take_ack
+
+
+@_mutant("ack_rejected_command_remembered", "a command whose value does not decode still takes its session's slot",
          "rule:stream.ack_match")
 def _ack_rejected_command_remembered() -> None:
     def remember(decoder, ev, before, out):
         h = _header(ev)
-        if out["kind"] == "error" and not h["is_ack"] and h["session"] and h["enc"] == 0 and len(ev.raw) > 17:
-            decoder._pending[(h["session"], h["seq"])] = (ev.raw[12], ev.raw[13])
+        if out["kind"] == "error" and not h["is_ack"] and h["session"] in accel.ACK_SESSIONS and h["enc"] == 0 \
+                and len(ev.raw) > 17:
+            decoder._slots[h["session"]] = (h["seq"], ev.raw[12], ev.raw[13])
         return out
 
     _on_decoded_frames(remember)
 
 
-@_mutant("ack_header_only_consumes", "a header-only ACK (no value) consumes the command, so its real ACK is not "
-         "matched", "rule:stream.ack_match", "rule:frame.header_only")
-def _ack_header_only_consumes() -> None:
-    def consume(decoder, ev, before, out):
-        h = _header(ev)
-        if h["is_ack"] and h["len"] == 12:
-            decoder._pending.pop((h["session"], h["seq"]), None)
-        return out
+@_mutant("ack_header_only_ignored", "a header-only ACK (no value) neither matches nor consumes the command (the "
+         "kit's former rule), so a later full ACK is matched", "rule:stream.ack_match", "rule:frame.header_only",
+         "E32")
+def _ack_header_only_ignored() -> None:
+    original = Decoder._frame
 
-    _on_decoded_frames(consume)
+    def _frame(self, ev):
+        h = _header(ev)
+        if not (h["is_ack"] and h["len"] == 12):
+            return original(self, ev)
+        slots, self._slots = self._slots, {}
+        try:
+            return original(self, ev)
+        finally:
+            self._slots = slots
+
+    Decoder._frame = _frame
 
 
 def _header_rules_in_order(order: tuple[str, ...]) -> None:

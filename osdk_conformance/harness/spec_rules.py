@@ -32,10 +32,11 @@ RULES: dict[str, str] = {
     "stream.truncated_tail": "a frame cut off by the end of the stream is truncated_frame, then rescanned",
     "stream.long": "streams longer than a receive buffer (300 and 1,024 bytes): long garbage, the largest frame, "
                    "a header announcing LEN 1023; the frame after them is still found",
-    "stream.ack_match": "an ACK is decoded as the ACK of the command with its session and SEQ seen earlier",
-    "stream.ack_memory": "what ACK matching remembers: a match removes the entry even when its value fails to decode, "
-                         "a command that fails to decode changes nothing, at most 1024 entries with the oldest "
-                         "forgotten first and a replaced entry keeping its place",
+    "stream.ack_match": "an ACK in session 2..31 is decoded as the ACK of the command waiting in its session's slot "
+                        "when their SEQs are equal (a header-only ACK too); session-1 ACKs are never matched",
+    "stream.ack_memory": "what ACK matching remembers: one slot per session 2..31, taken by each plain command that "
+                         "decodes; a match empties it even when its value fails to decode, a command that fails to "
+                         "decode changes nothing, all 30 slots are held at once",
     # broadcast (osdk_broadcast_*.ksy, rules.yaml#profiles, #/frame/broadcast)
     **{f"broadcast.flag_order.{p}": f"items follow the flag word in the flag-bit order of {p}" for p in PROFILES},
     "broadcast.item_sizes": "each item has its profile's size (time stamp 4/9, gimbal 12/13, control info 1/2, ...)",

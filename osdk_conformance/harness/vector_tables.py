@@ -175,7 +175,7 @@ def header_bits() -> list[tuple[str, int, int]]:
 
 ACK_SITUATIONS = {
     "matched": "the command, then its ACK: decoded as that command's ACK",
-    "matched_session1": "the same in session 1 (ACK optional, ERRATA E24): matched like any other session",
+    "session1_ack": "the same in session 1 (ACK optional, ERRATA E24, E32): the ACK is not matched",
     "matched_bad_value": "the command, then an ACK whose value does not fit the ACK layout: error with ack_of",
     "repeated_ack": "a second ACK with the same session and SEQ after a matched one: not matched",
     "ack_before_command": "the ACK arrives before its command: not matched",
@@ -185,8 +185,11 @@ ACK_SITUATIONS = {
     "rejected_command": "the command frame was rejected (its value does not decode): a later ACK is not matched",
     "retransmitted_command": "the command sent twice with the same session and SEQ: one ACK matches, the next not",
     "replaced_command": "another command took the same session and SEQ: the ACK is matched to the later one",
-    "interleaved": "two commands answered in reverse order: both matched",
-    "header_only_ack": "a header-only ACK neither matches nor consumes the command: a later ACK is matched",
+    "superseded_command": "a second command in the same session with another SEQ takes the session's slot: "
+                          "an ACK with the first command's SEQ is not matched (ERRATA E32)",
+    "interleaved": "two commands in sessions 2 and 3 answered in reverse order: both matched",
+    "header_only_ack": "a header-only ACK matches and consumes the command (its empty value decoded as the "
+                       "command's ACK): a later full ACK is not matched (ERRATA E32)",
 }
 """What a stream decoder must get right about ACKs, per command kind."""
 
@@ -240,48 +243,67 @@ def _events(case) -> list[dict]:
 
 @dataclass
 class _AckModel:
-    """What a stream has shown so far, for reading ACK situations off it."""
+    """What a stream has shown so far, for reading ACK situations off it
+    (one slot per session 2..31, PROTOCOL.md "ACK matching")."""
 
-    pending: dict = field(default_factory=dict)  # (session, seq) -> kinds sent since last answered, oldest key first
+    slots: dict = field(default_factory=dict)  # session -> (seq, kinds sent with that SEQ since it took the slot, order)
     answered: dict = field(default_factory=dict)  # (session, seq) -> kind of the command last answered
-    header_only_seen: set = field(default_factory=set)  # keys a header-only ACK arrived for while pending
+    header_only: dict = field(default_factory=dict)  # (session, seq) -> kind a header-only ACK was matched to
+    superseded: dict = field(default_factory=dict)  # (session, seq) -> kind whose slot a command with another SEQ took
     rejected: dict = field(default_factory=dict)  # (session, seq) -> kind of a command whose value did not decode
     session0: dict = field(default_factory=dict)  # seq -> kind of a session-0 command
+    session1: dict = field(default_factory=dict)  # seq -> kind of a session-1 command
+    sent: int = 0
 
     def command(self, ev: dict, key: tuple[int, int], kind: str) -> None:
+        session, seq = key
         if ev["kind"] == "error":
-            if ev["error"] in VALUE_ERRORS and key[0]:
+            if ev["error"] in VALUE_ERRORS and session:
                 self.rejected[key] = kind
-        elif key[0]:
-            self.pending.setdefault(key, []).append(kind)
+        elif session == 0:
+            self.session0[seq] = kind
+        elif session == 1:
+            self.session1[seq] = kind
+        elif session <= 31:
+            self.sent += 1
+            old = self.slots.get(session)
+            if old is not None and old[0] == seq:
+                self.slots[session] = (seq, [*old[1], kind], old[2])
+            else:
+                if old is not None:
+                    self.superseded[(session, old[0])] = old[1][-1]
+                self.slots[session] = (seq, [kind], self.sent)
             self.answered.pop(key, None)
-        else:
-            self.session0[key[1]] = kind
+            self.header_only.pop(key, None)
+            self.superseded.pop(key, None)
 
-    def matched(self, ev: dict, key: tuple[int, int]) -> set[tuple[str, str]]:
+    def matched(self, ev: dict, key: tuple[int, int], header_only: bool) -> set[tuple[str, str]]:
         kind = ev["ack_of"]
+        slot = self.slots.pop(key[0], None)
+        kinds = slot[1] if slot is not None and slot[0] == key[1] else [kind]
+        self.answered[key] = kind
+        if header_only:
+            self.header_only[key] = kind  # the situation shows when a later full ACK is not matched
+            return set()
         out = {(kind, "matched" if ev["kind"] == "frame" else "matched_bad_value")}
-        if key[0] == 1 and ev["kind"] == "frame":
-            out.add((kind, "matched_session1"))
-        if key in self.pending and list(self.pending).index(key) > 0:
-            out.add((kind, "interleaved"))  # an older command is still waiting
-        kinds = self.pending.pop(key, [kind])
+        if slot is not None and any(other[2] < slot[2] for other in self.slots.values()):
+            out.add((kind, "interleaved"))  # a command sent earlier, in another session, is still waiting
         if len(kinds) > 1:
             out.add((kind, "retransmitted_command" if len(set(kinds)) == 1 else "replaced_command"))
-        if key in self.header_only_seen:
-            out.add((kind, "header_only_ack"))
-        self.answered[key] = kind
         return out
 
     def unmatched(self, key: tuple[int, int], later: list[str]) -> set[tuple[str, str]]:
         """Why an ACK was not matched (`later`: kinds of commands with its key after it)."""
-        waiting = [(k, kinds[-1]) for k, kinds in self.pending.items()]
+        waiting = [((session, seq), kinds[-1]) for session, (seq, kinds, _) in self.slots.items()]
         same_seq = [kind for k, kind in waiting if k[1] == key[1]]
         same_session = [kind for k, kind in waiting if k[0] == key[0]]
-        reasons = ((self.answered.get(key), "repeated_ack"),
+        reasons = ((self.header_only.get(key), "header_only_ack"),
+                   (self.answered.get(key), "repeated_ack"),
                    (later[0] if later else None, "ack_before_command"),
                    (self.rejected.get(key), "rejected_command"),
+                   (self.session1.get(key[1]) if key[0] == 1 else None, "session1_ack"),
                    (self.session0.get(key[1]), "session0_command"),
+                   (self.superseded.get(key), "superseded_command"),
                    (same_seq[-1] if same_seq else None, "other_session"),
                    (same_session[-1] if same_session else None, "other_seq"))
         return next(({(kind, situation)} for kind, situation in reasons if kind), set())
@@ -300,11 +322,8 @@ def ack_situations(case) -> set[tuple[str, str]]:
         if not f["is_ack"]:
             if plain_data and len(raw) >= 14:
                 model.command(ev, key, command_name(raw[12], raw[13]))
-        elif f["len"] == HEADER_LEN:
-            if key in model.pending:
-                model.header_only_seen.add(key)
         elif "ack_of" in ev:
-            out |= model.matched(ev, key)
+            out |= model.matched(ev, key, f["len"] == HEADER_LEN)
         elif plain_data and ev["kind"] == "frame":
             later = [command_name(r[12], r[13]) for e, r, g in events[i + 1:]
                      if not g["is_ack"] and e["kind"] == "frame" and (g["session"], g["seq"]) == key and len(r) > 14]

@@ -42,14 +42,13 @@ static PyObject *text[TEXT_COUNT];
 
 /* ---- the Decoder type ------------------------------------------------------------------------- */
 
-#define CHANNELS 2 /* rx and tx of a capture: one deframer each, one ACK table */
+#define CHANNELS 2 /* rx and tx of a capture: one deframer each, one set of ACK slots */
 
 typedef struct {
     PyObject_HEAD
     uint8_t profile;
     PyObject *header_fields; /* the reference's header_fields(raw) for frames that do not decode */
-    osdk_ack_table_t acks;   /* one for both directions: an ACK received answers a command sent */
-    osdk_pending_t *pending;
+    osdk_acks_t acks;        /* one slot per session 2..31, for both directions: an ACK received answers a command sent */
     osdk_deframer_t deframer[CHANNELS];
     uint8_t window[CHANNELS][OSDK_DEFRAMER_MIN_BUFFER];
     osdk_frame_t frame;
@@ -107,26 +106,29 @@ static PyObject *frame_event(Decoder *self, const osdk_event_t *ev)
     osdk_error_clear(&err);
     if (osdk_frame_decode(ev->raw, ev->length, self->profile, f, &err) != OSDK_OK)
         return frame_error(self, ev, &err, NULL);
-    if (f->len == OSDK_FRAME_HEADER_LEN) {
-        command = "none";
-    } else if (!f->data_present || f->data.tag != OSDK_FRAME_DATA_FRAME_DATA) {
-        command = "encrypted";
-    } else {
-        const osdk_frame_frame_data_t *fd = &f->data.u.frame_data;
-        if (f->is_ack) {
-            uint8_t cmd_set, cmd_id;
-            if (!osdk_ack_table_take(&self->acks, f->session, f->seq, &cmd_set, &cmd_id)) {
-                command = "ack";
-            } else {
-                ack_of = osdk_command_name(cmd_set, cmd_id);
-                if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, cmd_set, cmd_id, true, self->profile,
-                                        &self->payload, &err) != OSDK_OK)
-                    return frame_error(self, ev, &err, ack_of);
-                have_ack = true;
-            }
+    {
+        bool header_only = f->len == OSDK_FRAME_HEADER_LEN;
+        bool plain = f->data_present && f->data.tag == OSDK_FRAME_DATA_FRAME_DATA;
+        uint8_t cmd_set, cmd_id;
+        if (f->is_ack && (plain || header_only) &&
+            osdk_acks_take(&self->acks, f->session, f->seq, &cmd_set, &cmd_id)) {
+            /* a header-only ACK is matched too: its value is empty */
+            const uint8_t *value = plain ? f->data.u.frame_data.ack_value.ptr : ev->raw + OSDK_FRAME_HEADER_LEN;
+            size_t value_len = plain ? f->data.u.frame_data.ack_value.len : 0;
+            ack_of = osdk_command_name(cmd_set, cmd_id);
+            if (osdk_payload_decode(value, value_len, cmd_set, cmd_id, true, self->profile, &self->payload, &err) != OSDK_OK)
+                return frame_error(self, ev, &err, ack_of);
+            have_ack = true;
+        } else if (header_only) {
+            command = "none";
+        } else if (!plain) {
+            command = "encrypted";
+        } else if (f->is_ack) {
+            command = "ack";
         } else {
+            const osdk_frame_frame_data_t *fd = &f->data.u.frame_data;
             command = osdk_command_name(fd->cmd_set, fd->cmd_id);
-            if (f->session > 0) osdk_ack_table_put(&self->acks, f->session, f->seq, fd->cmd_set, fd->cmd_id);
+            osdk_acks_command(&self->acks, f->session, f->seq, fd->cmd_set, fd->cmd_id);
         }
     }
     e = new_event(self, 5, ev->offset, text[S_FRAME]);
@@ -249,12 +251,11 @@ static PyObject *Decoder_finish(Decoder *self, PyObject *args, PyObject *kwargs)
 
 static int Decoder_init(Decoder *self, PyObject *args, PyObject *kwargs)
 {
-    static char *kwlist[] = {"profile", "header_fields", "pending_limit", NULL};
+    static char *kwlist[] = {"profile", "header_fields", NULL};
     unsigned char profile;
     PyObject *header_fields;
-    Py_ssize_t limit;
     int ch;
-    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "bOn:Decoder", kwlist, &profile, &header_fields, &limit))
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "bO:Decoder", kwlist, &profile, &header_fields))
         return -1;
     if (self->busy) {
         PyErr_SetString(PyExc_RuntimeError, "this Decoder is decoding");
@@ -264,17 +265,7 @@ static int Decoder_init(Decoder *self, PyObject *args, PyObject *kwargs)
         PyErr_SetString(PyExc_TypeError, "header_fields must be callable");
         return -1;
     }
-    if (limit < 1) {
-        PyErr_SetString(PyExc_ValueError, "pending_limit must be at least 1");
-        return -1;
-    }
-    PyMem_Free(self->pending);
-    self->pending = PyMem_Calloc((size_t)limit + 1, sizeof(osdk_pending_t));
-    if (self->pending == NULL) {
-        PyErr_NoMemory();
-        return -1;
-    }
-    osdk_ack_table_init(&self->acks, self->pending, (size_t)limit);
+    osdk_acks_init(&self->acks);
     self->profile = profile;
     Py_INCREF(header_fields);
     Py_XSETREF(self->header_fields, header_fields);
@@ -299,7 +290,6 @@ static void Decoder_dealloc(Decoder *self)
 {
     PyObject_GC_UnTrack(self);
     Decoder_clear(self);
-    PyMem_Free(self->pending);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -320,7 +310,7 @@ static PyTypeObject DecoderType = {
     .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_GC,
     .tp_traverse = (traverseproc)Decoder_traverse,
     .tp_clear = (inquiry)Decoder_clear,
-    .tp_doc = "Decoder(profile, header_fields, pending_limit): a stream of bytes -> the events of "
+    .tp_doc = "Decoder(profile, header_fields): a stream of bytes -> the events of "
               "osdkc decode.\nprofile is the u8 value of the wire profile (spec/rules.yaml).",
     .tp_new = PyType_GenericNew,
     .tp_init = (initproc)Decoder_init,

@@ -35,8 +35,8 @@ from osdk_conformance.core.rules import profile as load_profile
 ENV = "OSDKC_ACCEL"
 MODULE = "osdk_conformance.reference._accel"
 
-# Commands remembered for ACK matching; the pure-Python decoder keeps the same number.
-PENDING_LIMIT = 1024
+# Sessions with an ACK slot (PROTOCOL.md "ACK matching", ERRATA E32); the pure-Python decoder has the same.
+ACK_SESSIONS = range(2, 32)
 
 _OFF = {"0", "off", "no", "false"}
 _ON = {"1", "on", "yes", "true"}
@@ -104,7 +104,7 @@ class NativeStream:
     reference/decode.py's interface: events of the bytes fed so far."""
 
     def __init__(self, module: ModuleType, profile: str) -> None:
-        self._decoder = module.Decoder(load_profile(profile).value, header_fields, PENDING_LIMIT)
+        self._decoder = module.Decoder(load_profile(profile).value, header_fields)
 
     def feed(self, data: bytes, direction: str | None = None) -> Iterator[dict[str, Any]]:
         view = memoryview(data)

@@ -4,7 +4,8 @@ Deframing follows the SDK receiver (deframe.py); each intact frame is then
 decoded with the Construct spec for the chosen profile and printed in the
 JSON value model (docs/VALUE-MODEL.md). ACK values are decoded when the
 same stream, or with --direction both the capture's sent bytes, carried the
-command they answer (matched by SEQ and session).
+command they answer: the one command waiting in the ACK's session (2..31)
+with the ACK's SEQ, as DJI's receivers match them (ERRATA E32).
 
 That is the reference, `decode_events`. What `osdkc decode`, the Python
 API and the acceptance receiver run (`stream_events`, `payload_body`) is the
@@ -76,7 +77,7 @@ class Decoder:
         self._payload = payload
         self.profile = profile
         self._model = model.from_construct
-        self._pending: dict[tuple[int, int], tuple[int, int]] = {}  # (session, seq) -> (set, id)
+        self._slots: dict[int, tuple[int, int, int]] = {}  # session 2..31 -> (seq, set, id) of the command waiting
         self._fast = _fast_frames(profile)
 
     def event(self, ev: Frame | Rejected | Garbage) -> dict:
@@ -98,8 +99,7 @@ class Decoder:
             if known is not None:
                 frame = known.convert(ev.raw)
                 if frame is not None:
-                    if known.session > 0:
-                        self._expect_ack(known.session, frame["seq"], known.cmd)
+                    self._expect_ack(known.session, frame["seq"], known.cmd)
                     return {"offset": ev.offset, "kind": "frame", "command": known.command, "frame": frame}
         try:
             parsed = self._parse_frame(ev.raw, self.profile)
@@ -109,34 +109,40 @@ class Decoder:
         out: dict[str, Any] = {"offset": ev.offset, "kind": "frame"}
         frame = self._model(parsed)
         data = parsed.get("data")
-        if parsed.len == 12:
+        cmd = self._take_ack(parsed.session, parsed.seq) if parsed.is_ack and (parsed.len == 12 or isinstance(data, dict)) else None
+        if cmd is not None:  # a header-only ACK too: its value is empty
+            out["ack_of"] = command_name(*cmd)
+            try:
+                out["ack"] = self._model(self._payload(*cmd, True, self.profile).parse(
+                    b"" if parsed.len == 12 else data.ack_value))["body"]
+            except construct.ConstructError as e:
+                return {"offset": ev.offset, "kind": "error", "error": classify(e), "detail": one_line(e),
+                        "length": len(ev.raw), "frame_header": header_fields(ev.raw), "ack_of": out["ack_of"]}
+        elif parsed.len == 12:
             out["command"] = "none"
         elif not isinstance(data, dict):
             out["command"] = "encrypted"
         elif parsed.is_ack:
-            key = (parsed.session, parsed.seq)
-            if key in self._pending:
-                cmd = self._pending.pop(key)
-                out["ack_of"] = command_name(*cmd)
-                try:
-                    out["ack"] = self._model(self._payload(*cmd, True, self.profile).parse(data.ack_value))["body"]
-                except construct.ConstructError as e:
-                    return {"offset": ev.offset, "kind": "error", "error": classify(e), "detail": one_line(e),
-                            "length": len(ev.raw), "frame_header": header_fields(ev.raw), "ack_of": out["ack_of"]}
-            else:
-                out["command"] = "ack"
+            out["command"] = "ack"
         else:
             cmd = (int(data.cmd_set), data.cmd_id)
             out["command"] = command_name(*cmd)
-            if parsed.session > 0:
-                self._expect_ack(parsed.session, parsed.seq, cmd)
+            self._expect_ack(parsed.session, parsed.seq, cmd)
         out["frame"] = frame
         return out
 
     def _expect_ack(self, session: int, seq: int, cmd: tuple[int, int]) -> None:
-        self._pending[(session, seq)] = cmd
-        if len(self._pending) > accel.PENDING_LIMIT:  # bounded: unanswered commands are forgotten
-            self._pending.pop(next(iter(self._pending)))
+        """A plain command that decoded takes its session's slot (sessions 2..31; 0 and 1 have none)."""
+        if session in accel.ACK_SESSIONS:
+            self._slots[session] = (seq, *cmd)
+
+    def _take_ack(self, session: int, seq: int) -> tuple[int, int] | None:
+        """The command a plain ACK answers, taken out of its session's slot: the one waiting there with its SEQ."""
+        waiting = self._slots.get(session)
+        if waiting is None or waiting[0] != seq:
+            return None
+        del self._slots[session]
+        return waiting[1:]
 
 
 class _Known(NamedTuple):

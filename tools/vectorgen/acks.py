@@ -51,7 +51,7 @@ def ack_situation_streams(kind: str, other: str, profile: str) -> dict[str, byte
 
     out = {
         "matched": cmd() + ack(),
-        "matched_session1": cmd(session=1) + ack(session=1),
+        "session1_ack": cmd(session=1) + ack(session=1),
         "matched_bad_value": cmd() + ack(v=ack_value + b"\x00"),
         "repeated_ack": cmd() + ack() + ack(),
         "ack_before_command": ack() + cmd(),
@@ -61,48 +61,59 @@ def ack_situation_streams(kind: str, other: str, profile: str) -> dict[str, byte
         "rejected_command": cmd(v=bad or b"") + ack(),
         "retransmitted_command": cmd() + cmd() + ack() + ack(),
         "replaced_command": cmd(v=ovalue, c=(ocs, oci)) + cmd() + ack(),
-        "interleaved": cmd(v=ovalue, c=(ocs, oci)) + cmd(seq=n + 1) + ack(seq=n + 1) + ack(v=oack),
+        "superseded_command": cmd() + cmd(v=ovalue, c=(ocs, oci), seq=n + 1) + ack() + ack(seq=n + 1, v=oack),
+        "interleaved": cmd(v=ovalue, c=(ocs, oci)) + cmd(session=3, seq=n + 1) + ack(session=3, seq=n + 1)
+        + ack(v=oack),
         "header_only_ack": cmd() + frame_bytes(is_ack=True, session=2, seq=n) + ack(),
     }
     return {k: v for k, v in out.items() if vt.feasible_situation(kind, k)}
 
 
 def add_ack_memory(add: Callable[..., None], profile: str) -> None:
-    """What ACK matching remembers (PROTOCOL.md "ACK matching"), each case
-    telling the rule from the outsider check's wrong guesses (docs/OUTSIDER-CHECK.md
-    F4-F6): a decoded ACK shows which command it was matched to, a raw one
-    that none was remembered."""
-    flags = R("stream.ack_match", "stream.ack_memory")
+    """What ACK matching remembers (PROTOCOL.md "ACK matching": one slot per
+    session 2..31, ERRATA E32), each case telling the rule from the outsider
+    check's wrong guesses (docs/OUTSIDER-CHECK.md F4-F6): a decoded ACK shows
+    which command it was matched to, a raw one that none was waiting."""
+    flags = R("stream.ack_match", "stream.ack_memory") + ["E32"]
     obtain = frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=40)
     ack_obtained = frame_bytes(is_ack=True, value=le16(2), session=2, seq=40)
     add("ack.memory.bad_value_forgets", "stream.ack_memory",
-        "obtain control, an ACK whose 3-byte value does not decode, then a good ACK with the same key: the first "
-        "ACK used the entry up, so the second is not matched (raw)",
+        "obtain control, an ACK whose 3-byte value does not decode, then a good ACK with the same session and SEQ: "
+        "the first ACK emptied the session's slot, so the second is not matched (raw)",
         obtain + frame_bytes(is_ack=True, value=b"\x02\x00\x00", session=2, seq=40) + ack_obtained, flags)
     bad_activation = frame_bytes(cmd_set=0, cmd_id=1, value=bytes(40), session=2, seq=40)
     add("ack.memory.undecodable_command_changes_nothing", "stream.ack_memory",
         "obtain control, then a 40-byte activation (does not decode) with the same session and SEQ, then an ACK "
-        "with code 2: still matched to obtain control (obtained), neither forgotten nor taken over by activation",
+        "with code 2: still matched to obtain control (obtained), the slot neither emptied nor taken by activation",
         obtain + bad_activation + ack_obtained, flags)
     if profile == PROFILES[0]:
-        add_ack_memory_limit(add, flags)
+        add_ack_memory_slots(add, flags)
 
 
-def add_ack_memory_limit(add: Callable[..., None], flags: list[str]) -> None:
-    """The 1024-entry limit and which entry goes first. The table does not
-    depend on the profile: its 1,000-frame stream is generated for one."""
+def add_ack_memory_slots(add: Callable[..., None], flags: list[str]) -> None:
+    """The 30 slots, one per session 2..31, all held at once, and sessions 0
+    and 1, which have none. The slots do not depend on the profile: the
+    stream is generated for one."""
 
-    def control_ack(seq: int) -> bytes:
-        return frame_bytes(is_ack=True, value=le16(2), session=2, seq=seq)
+    def obtain(session: int, seq: int) -> bytes:
+        return frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=session, seq=seq)
 
-    obtains = b"".join(frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=q) for q in range(1, 1025))
-    again = frame_bytes(cmd_set=0, cmd_id=0, value=b"\x00", session=2, seq=1)
-    newer = b"".join(frame_bytes(cmd_set=1, cmd_id=0, value=b"\x01", session=2, seq=q) for q in (1025, 1026))
-    add("ack.memory.limit_and_replacement", "stream.ack_memory",
-        "1024 obtain-control commands (session 2, SEQ 1..1024), a version query with SEQ 1 (replaces the oldest "
-        "entry, which keeps its place), two new commands SEQ 1025 and 1026, then ACKs for SEQ 1, 2, 3 and 1026: at "
-        "most 1024 are remembered and the oldest goes first, so SEQ 1 and 2 are raw, SEQ 3 and 1026 match",
-        obtains + again + newer + b"".join(control_ack(q) for q in (1, 2, 3, 1026)), flags)
+    def control_ack(session: int, seq: int) -> bytes:
+        return frame_bytes(is_ack=True, value=le16(2), session=session, seq=seq)
+
+    commands = b"".join(obtain(s, 100 + s) for s in range(2, 32)) + obtain(1, 101) + obtain(0, 100)
+    order = [s for k in range(30) for s in [2 + (k * 7) % 30]]  # every session once, in another order
+    acks = control_ack(1, 101) + control_ack(0, 100) + b"".join(control_ack(s, 100 + s) for s in order)
+    add("ack.memory.one_slot_per_session", "stream.ack_memory",
+        "obtain control in every session 2..31 (SEQ 100 + session), then in session 1 (SEQ 101) and session 0 "
+        "(SEQ 100), then ACKs with code 2: the session-1 and session-0 ones first, which are not matched (raw), then "
+        "one for each session 2..31 in another order (2, 9, 16, ...), all matched: one slot per session, 30 held at "
+        "once, none forgotten",
+        commands + acks, flags)
+
+
+E32_SITUATIONS = frozenset({"session1_ack", "superseded_command", "interleaved", "header_only_ack", "other_seq"})
+"""Situations where one slot per session (ERRATA E32) decides what matches."""
 
 
 def add_ack_situations(s: Suite, profile: str) -> None:
@@ -119,7 +130,8 @@ def add_ack_situations(s: Suite, profile: str) -> None:
             test = s.add("decode_stream", profile, f"streams.{profile}.ack.{kind}.{situation}",
                          "stream.ack_situations", f"{kind} ({layout} an ACK layout): {vt.ACK_SITUATIONS[situation]}",
                          {"hex": data.hex(), "chunks": [len(data)]},
-                         R("stream.ack_match") + (["E24"] if situation in ("session0_command", "matched_session1") else []))
+                         R("stream.ack_match") + (["E24"] if situation in ("session0_command", "session1_ack") else [])
+                         + (["E32"] if situation in E32_SITUATIONS else []))
             case = vectors.cases_of({"testGroups": [{"operation": "decode_stream", "profile": profile,
                                                      "tests": [test]}]}, "streams.json")[0]
             if (kind, situation) not in vt.ack_situations(case):

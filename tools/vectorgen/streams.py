@@ -148,11 +148,14 @@ def add_ack_matching(c: StreamCases) -> None:
           ack + cmd, R("stream.ack_match"))
     c.add("ack.other_seq", "stream.ack", "an ACK whose SEQ matches no command: raw", cmd +
           frame_bytes(is_ack=True, value=b"\x03\x00\x00", session=2, seq=41), R("stream.ack_match"))
-    vq = frame_bytes(cmd_set=0, cmd_id=0, value=b"\x00", session=1, seq=77)
     version_id = bytes(VERSION_ID_SIZE if has_version_id(c.profile) else 0)  # ERRATA E30
-    vack = frame_bytes(is_ack=True, session=1, seq=77, value=struct.pack("<HI", 0xFF01, 7) + version_id + bytes(32))
-    c.add("ack.session1_version", "stream.ack", "get version in session 1 and its ACK (not_activated): matched",
-          vq + vack, R("stream.ack_match", "payload.version_ack") + ["E24", "E30"])
+    version_ack = struct.pack("<HI", 0xFF01, 7) + version_id + bytes(32)
+    for session, outcome in ((2, "matched"), (1, "never matched: DJI's receivers match sessions 2 to 31 only, raw")):
+        vq = frame_bytes(cmd_set=0, cmd_id=0, value=b"\x00", session=session, seq=77)
+        vack = frame_bytes(is_ack=True, session=session, seq=77, value=version_ack)
+        c.add(f"ack.session{session}_version", "stream.ack",
+              f"get version in session {session} and its ACK (not_activated): {outcome}",
+              vq + vack, R("stream.ack_match", "payload.version_ack") + ["E24", "E30"])
     lc = frame_bytes(cmd_set=2, cmd_id=1, value=b"\x04", session=3, seq=5)
     lack = frame_bytes(is_ack=True, session=3, seq=5, value=b"\x00\x00")
     c.add("ack.lost_control", "stream.ack", "a lost-control push in session 3 and the device's 2-byte zero ACK",

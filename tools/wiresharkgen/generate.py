@@ -37,7 +37,6 @@ from osdk_conformance.core.crc import engine  # noqa: E402
 from osdk_conformance.core.model import ERROR_BY_FIELD  # noqa: E402
 from osdk_conformance.core.paths import SPEC  # noqa: E402
 from osdk_conformance.core.rules import crc_params, default_rules  # noqa: E402
-from osdk_conformance.reference.accel import PENDING_LIMIT  # noqa: E402
 
 RUNTIME = Path(__file__).resolve().parent / "runtime.lua"
 PROTOCOL_SCHEMA = ROOT / "conformance" / "schemas" / "protocol.schema.json"
@@ -527,7 +526,6 @@ class Generator:
         out.append(f"HEADER_CHECKS = {self.header()}\n")
         out.append("FRAMES = {\n" + ",\n".join(frames) + "\n}\n")
         out.append("ACKS = {\n" + ",\n".join(acks) + "\n}\n")
-        out.append(f"PENDING_LIMIT = {PENDING_LIMIT}\n")
         out.append("ENUMS = {\n" + ",\n".join(
             f"[{lua_str(k)}] = {{ " + ", ".join(f"[{v}] = {lua_str(n)}" for v, n in sorted(names.items())) + " }"
             for k, names in sorted(self.enums.items())) + "\n}\n")

@@ -10,10 +10,10 @@
 -- frames (conformance/PROTOCOL.md, decode_stream), and each frame or
 -- rejected run of bytes is shown in the packet where its last byte arrived.
 -- ACKs are matched to their commands as `osdkc decode --direction both`
--- does (conformance/PROTOCOL.md, "ACK matching"): one table of remembered
--- commands for the capture, filled in capture order on the first pass.
+-- does (conformance/PROTOCOL.md, "ACK matching"; ERRATA E32): one slot per
+-- session 2..31 for the capture, filled in capture order on the first pass.
 
-local ERRORS, PROFILES, DEFAULT_PROFILE, CRC, HEADER_CHECKS, FRAMES, ACKS, PENDING_LIMIT, ENUMS, FIELDS
+local ERRORS, PROFILES, DEFAULT_PROFILE, CRC, HEADER_CHECKS, FRAMES, ACKS, ENUMS, FIELDS
 
 local osdk = Proto("osdk", "DJI Onboard SDK OPEN protocol")
 local F = {}        -- ProtoFields by abbreviation
@@ -255,68 +255,34 @@ local function feed(state, chunk)
     return events
 end
 
--- The remembered commands: (session, seq) -> { cmd_set, cmd_id }, oldest
--- first. A replaced entry keeps its place; a matched one leaves the table.
--- `order` holds keys with the serial of their entry; a key whose entry has
--- left (or been made again, with a new serial) is skipped when it comes up.
-local function new_pending()
-    return { entries = {}, order = {}, head = 1, tail = 0, count = 0, serial = 0 }
+-- The ACK slots: session (2..31) -> { seq, cmd_set, cmd_id } of the one
+-- command waiting in it. A command takes its session's slot; an ACK with
+-- the slot's SEQ empties it. Sessions 0 and 1 have no slot.
+local function new_slots()
+    return {}
 end
 
-local function forget_oldest(t)
-    while t.head <= t.tail do
-        local o = t.order[t.head]
-        t.order[t.head] = nil
-        t.head = t.head + 1
-        local e = t.entries[o.key]
-        if e and e.serial == o.serial then
-            t.entries[o.key] = nil
-            t.count = t.count - 1
-            return
-        end
-    end
+local function has_slot(session)
+    return session >= 2 and session <= 31
 end
 
-local function remember(t, key, cmd_set, cmd_id)
-    local e = t.entries[key]
-    if e then
-        e.cmd_set, e.cmd_id = cmd_set, cmd_id
-        return
-    end
-    t.serial = t.serial + 1
-    t.entries[key] = { cmd_set = cmd_set, cmd_id = cmd_id, serial = t.serial }
-    t.tail = t.tail + 1
-    t.order[t.tail] = { key = key, serial = t.serial }
-    t.count = t.count + 1
-    if t.count > PENDING_LIMIT then forget_oldest(t) end
-    if t.tail - t.head > 4 * PENDING_LIMIT then
-        -- matched entries leave stale keys behind: keep the queue bounded
-        local order, n = {}, 0
-        for i = t.head, t.tail do
-            local o = t.order[i]
-            local live = t.entries[o.key]
-            if live and live.serial == o.serial then
-                n = n + 1
-                order[n] = o
-            end
-        end
-        t.order, t.head, t.tail = order, 1, n
-    end
+local function remember(t, session, seq, cmd_set, cmd_id)
+    if has_slot(session) then t[session] = { seq = seq, cmd_set = cmd_set, cmd_id = cmd_id } end
 end
 
-local function take(t, key)
-    local e = t.entries[key]
-    if e then
-        t.entries[key] = nil
-        t.count = t.count - 1
+local function take(t, session, seq)
+    local e = t[session]
+    if e and e.seq == seq then
+        t[session] = nil
+        return e
     end
-    return e
+    return nil
 end
 
-local states, results, pending = {}, {}, new_pending()
+local states, results, slots = {}, {}, new_slots()
 
 function osdk.init()
-    states, results, pending = {}, {}, new_pending()
+    states, results, slots = {}, {}, new_slots()
 end
 
 local function profile_name()
@@ -335,18 +301,19 @@ local function decode(ev, profile)
 end
 
 -- ACK matching of one receiver event, in capture order (first pass): a
--- decoded plain command with SESSION > 0 is remembered, a decoded plain ACK
--- with DATA takes its command out of the table into `ev.ack`.
+-- decoded plain command takes its session's slot, a decoded plain ACK (a
+-- header-only one too) with the slot's SEQ takes its command out into `ev.ack`.
 local function match(ev, profile)
     if ev.garbage or ev.err then return end
     local v = decode(ev, profile)
-    if not v or type(v.data) ~= "table" or v.session == 0 then return end
-    local key = v.session * 65536 + v.seq
+    if not v then return end
+    local header_only = #ev.bytes == 12
+    if type(v.data) ~= "table" and not header_only then return end
     if v.is_ack then
-        local cmd = take(pending, key)
-        if cmd then ev.ack = { cmd_set = cmd.cmd_set, cmd_id = cmd.cmd_id } end
-    else
-        remember(pending, key, v.data.cmd_set, v.data.cmd_id)
+        local cmd = take(slots, v.session, v.seq)
+        if cmd then ev.ack = { cmd_set = cmd.cmd_set, cmd_id = cmd.cmd_id, header_only = header_only } end
+    elseif not header_only then
+        remember(slots, v.session, v.seq, v.data.cmd_set, v.data.cmd_id)
     end
 end
 
@@ -368,6 +335,11 @@ local function show(ev, tree, profile)
         v["@ack"] = { cmd_set = ev.ack.cmd_set, cmd_id = ev.ack.cmd_id, layout = ACKS[profile] }
     end
     local ok, e = pcall(run_seq, FRAMES[profile], 0, tvb:len(), v, nil, v, {}, 0, sub)
+    if ok and ev.ack and ev.ack.header_only then
+        -- a matched header-only ACK: its empty value decoded with its command's ACK layout
+        local av = { cmd_set = ev.ack.cmd_set, cmd_id = ev.ack.cmd_id }
+        ok, e = pcall(run_node, ACKS[profile], 12, 12, av, nil, v, {}, 12, sub)
+    end
     if not ok then
         if type(e) == "table" and e.osdk_error then
             sub:add_proto_expert_info(EXPERT[e.osdk_error], e.osdk_error .. ": " .. e.detail)

@@ -1,7 +1,6 @@
 package main
 
 import (
-	"container/list"
 	"encoding/binary"
 	"encoding/hex"
 	"encoding/json"
@@ -182,7 +181,7 @@ func checkStream(te *Testee, data []byte) string {
 	for n := len(stream) / size; n > 0; n-- {
 		sizes = append(sizes, size)
 	}
-	dec := &streamDecoder{t: te, profile: profile, models: true, order: list.New(), pending: map[pendingKey]*list.Element{}}
+	dec := &streamDecoder{t: te, profile: profile, models: true}
 	d := k.NewDeframer()
 	next := 0
 	check := func(evs []k.Event) string {

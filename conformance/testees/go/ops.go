@@ -2,7 +2,6 @@ package main
 
 import (
 	"bytes"
-	"container/list"
 	"encoding/hex"
 	"errors"
 	"fmt"
@@ -17,8 +16,10 @@ import (
 )
 
 const (
-	testeeName   = "osdk-kaitai-go"
-	pendingLimit = 1024 // unanswered commands remembered for ACK matching
+	testeeName = "osdk-kaitai-go"
+	// sessions firstAckSession..lastAckSession have an ACK slot (PROTOCOL.md "ACK matching", ERRATA E32)
+	firstAckSession = 2
+	lastAckSession  = 31
 )
 
 var operations = []string{"decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control",
@@ -366,25 +367,24 @@ func (t *Testee) encodeFrame(r request, _ string) (Obj, error) {
 
 // ---- streams ----------------------------------------------------------------------
 
-type pendingKey struct{ session, seq uint64 }
-
-type pendingCmd struct {
-	key           pendingKey
+// ackSlot is the command waiting for its ACK in one session.
+type ackSlot struct {
+	waiting       bool
+	seq           uint16
 	cmdSet, cmdID uint8
 }
 
 // streamDecoder turns Deframer events into answer events: Kaitai values,
-// and ACKs typed by the command with the same session and SEQ seen earlier.
-// Pending commands are kept in first-seen order (a repeated key keeps its
-// place) and the oldest is forgotten beyond pendingLimit. Without models,
+// and ACKs typed by the command waiting in their session's slot with their
+// SEQ (one slot per session 2..31: a plain command takes its session's
+// slot, a matching ACK, header-only too, empties it). Without models,
 // values stay as the parsers returned them (the bench mode times decoding,
 // not the value model).
 type streamDecoder struct {
 	t       *Testee
 	profile string
 	models  bool
-	order   *list.List
-	pending map[pendingKey]*list.Element
+	slots   [lastAckSession + 1]ackSlot
 }
 
 func (d *streamDecoder) event(ev k.Event) (out Obj) {
@@ -424,42 +424,38 @@ func (d *streamDecoder) frame(ev k.Event) (Obj, error) {
 		return nil, err
 	}
 	out := Obj{{"offset", ev.Offset}, {"kind", "frame"}}
-	if fd, ok := f.Data.(*k.OsdkFrame_FrameData); ok && f.Len > k.HeaderLen {
-		key := pendingKey{f.Session, uint64(f.Seq)}
-		if f.IsAck {
-			if el, ok := d.pending[key]; ok {
-				cmd := d.order.Remove(el).(pendingCmd)
-				delete(d.pending, key)
-				ackOf := commandName(cmd.cmdSet, cmd.cmdID)
-				out = append(out, KV{"ack_of", ackOf})
-				ack, err := d.t.parsePayload(fd.AckValue, cmd.cmdSet, cmd.cmdID, true, d.profile)
-				if err != nil {
-					var rej *k.Error
-					if errors.As(err, &rej) {
-						return d.errorEvent(ev, rej, ackOf), nil
-					}
-					return nil, err
-				}
-				if !d.models {
-					out = append(out, KV{"ack", ack.Body})
-				} else if body, err := d.t.bodyModel(ack); err != nil {
-					return nil, err
-				} else {
-					out = append(out, KV{"ack", body})
-				}
+	fd, plain := f.Data.(*k.OsdkFrame_FrameData)
+	plain = plain && f.Len > k.HeaderLen
+	headerOnly := f.Len == k.HeaderLen
+	hasSlot := f.Session >= firstAckSession && f.Session <= lastAckSession
+	if f.IsAck && (plain || headerOnly) && hasSlot {
+		slot := &d.slots[f.Session]
+		if slot.waiting && slot.seq == f.Seq {
+			slot.waiting = false
+			ackOf := commandName(slot.cmdSet, slot.cmdID)
+			out = append(out, KV{"ack_of", ackOf})
+			value := []byte{} // a header-only ACK's value is empty
+			if plain {
+				value = fd.AckValue
 			}
-		} else if f.Session > 0 {
-			cmd := pendingCmd{key, uint8(fd.CmdSet), fd.CmdId}
-			if el, ok := d.pending[key]; ok {
-				el.Value = cmd
-			} else {
-				d.pending[key] = d.order.PushBack(cmd)
-				if d.order.Len() > pendingLimit {
-					oldest := d.order.Remove(d.order.Front()).(pendingCmd)
-					delete(d.pending, oldest.key)
+			ack, err := d.t.parsePayload(value, slot.cmdSet, slot.cmdID, true, d.profile)
+			if err != nil {
+				var rej *k.Error
+				if errors.As(err, &rej) {
+					return d.errorEvent(ev, rej, ackOf), nil
 				}
+				return nil, err
+			}
+			if !d.models {
+				out = append(out, KV{"ack", ack.Body})
+			} else if body, err := d.t.bodyModel(ack); err != nil {
+				return nil, err
+			} else {
+				out = append(out, KV{"ack", body})
 			}
 		}
+	} else if !f.IsAck && plain && hasSlot {
+		d.slots[f.Session] = ackSlot{true, f.Seq, uint8(fd.CmdSet), fd.CmdId}
 	}
 	if !d.models {
 		return append(out, KV{"frame", f}), nil
@@ -480,7 +476,7 @@ type eventStream struct {
 }
 
 func (t *Testee) newEventStream(p string, models bool, onEvent func(Obj)) *eventStream {
-	dec := &streamDecoder{t: t, profile: p, models: models, order: list.New(), pending: map[pendingKey]*list.Element{}}
+	dec := &streamDecoder{t: t, profile: p, models: models}
 	return &eventStream{deframer: k.NewDeframer(), dec: dec, onEvent: onEvent}
 }
 

@@ -11,7 +11,9 @@ const { modelOf } = require('./model');
 const NAME = 'osdk-kaitai-javascript';
 const PROFILES = osdk.PROFILES;
 const AXIS_RANGE = { x: 'horizontal', y: 'horizontal', z: 'vertical', yaw: 'yaw' };
-const PENDING_LIMIT = 1024; // unanswered commands remembered for ACK matching
+// Sessions with an ACK slot (PROTOCOL.md "ACK matching", ERRATA E32).
+const FIRST_ACK_SESSION = 2;
+const LAST_ACK_SESSION = 31;
 
 const commandName = (cmdSet, cmdId) => osdk.commandName(cmdSet, cmdId) || 'unknown';
 
@@ -150,7 +152,7 @@ class StreamDecoder {
   constructor(profile, models = true) {
     this.profile = profile;
     this.models = models;
-    this.pending = new Map(); // "session.seq" -> [cmd_set, cmd_id], oldest first
+    this.slots = new Map(); // session 2..31 -> [seq, cmd_set, cmd_id] of the command waiting for its ACK
   }
 
   event(ev) {
@@ -175,29 +177,29 @@ class StreamDecoder {
   frame(ev) {
     const f = osdk.decodeFrame(ev.raw, this.profile);
     const out = { offset: ev.offset, kind: 'frame' };
-    if (f.data instanceof osdk.OsdkFrame.FrameData) {
-      const key = `${f.session}.${f.seq}`;
-      if (f.isAck) {
-        const cmd = this.pending.get(key);
-        if (cmd !== undefined) {
-          this.pending.delete(key);
-          out.ack_of = commandName(cmd[0], cmd[1]);
-          let ack;
-          try {
-            ack = osdk.decodePayload(f.data.ackValue, cmd[0], cmd[1], true, this.profile);
-          } catch (err) {
-            if (!(err instanceof osdk.OsdkError)) throw err;
-            return {
-              offset: ev.offset, kind: 'error', error: err.errorClass, detail: err.message,
-              length: ev.raw.length, ack_of: out.ack_of,
-            };
-          }
-          out.ack = this.models ? modelOf(ack, f.data.ackValue) : ack;
+    const plain = f.data instanceof osdk.OsdkFrame.FrameData;
+    const headerOnly = f.len === 12;
+    const hasSlot = f.session >= FIRST_ACK_SESSION && f.session <= LAST_ACK_SESSION;
+    if (f.isAck && (plain || headerOnly) && hasSlot) {
+      const cmd = this.slots.get(f.session);
+      if (cmd !== undefined && cmd[0] === f.seq) {
+        this.slots.delete(f.session);
+        out.ack_of = commandName(cmd[1], cmd[2]);
+        const value = plain ? f.data.ackValue : new Uint8Array(0); // a header-only ACK's value is empty
+        let ack;
+        try {
+          ack = osdk.decodePayload(value, cmd[1], cmd[2], true, this.profile);
+        } catch (err) {
+          if (!(err instanceof osdk.OsdkError)) throw err;
+          return {
+            offset: ev.offset, kind: 'error', error: err.errorClass, detail: err.message,
+            length: ev.raw.length, ack_of: out.ack_of,
+          };
         }
-      } else if (f.session > 0) {
-        this.pending.set(key, [f.data.cmdSet, f.data.cmdId]);
-        if (this.pending.size > PENDING_LIMIT) this.pending.delete(this.pending.keys().next().value);
+        out.ack = this.models ? modelOf(ack, value) : ack;
       }
+    } else if (!f.isAck && plain && hasSlot) {
+      this.slots.set(f.session, [f.seq, f.data.cmdSet, f.data.cmdId]);
     }
     out.frame = this.models ? modelOf(f, ev.raw) : f;
     return out;

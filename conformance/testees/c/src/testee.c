@@ -31,7 +31,6 @@
 #include "osdk_tables.h"
 
 #define TESTEE_NAME "osdk-c-generated"
-#define PENDING_LIMIT 1024 /* unanswered commands remembered for ACK matching */
 #define EVENT_BUF (1u << 20)
 
 
@@ -236,8 +235,7 @@ typedef struct {
     int profile;
     bool first_event;
     osdk_json_t *out;   /* the answer's "events" array */
-    osdk_ack_table_t acks;
-    osdk_pending_t pending[PENDING_LIMIT + 1];
+    osdk_acks_t acks; /* one slot per session 2..31 (ACK matching) */
 } stream_ctx_t;
 
 static void write_event(stream_ctx_t *s, osdk_json_t *w)
@@ -293,27 +291,31 @@ typedef struct {
     bool have_ack;       /* g_payload holds that ACK's value */
 } frame_result_t;
 
-/* Decode into g_frame (and g_payload for a matched ACK), keeping the pending table. */
+/* Decode into g_frame (and g_payload for a matched ACK), keeping the ACK slots. */
 static void decode_stream_frame(stream_ctx_t *s, const osdk_event_t *ev, frame_result_t *r)
 {
+    bool plain, header_only;
     memset(r, 0, sizeof *r);
     if (osdk_frame_decode(ev->raw, ev->length, osdk_profile_enum_values[s->profile], &g_frame, &r->err) != OSDK_OK)
         return;
-    if (g_frame.data_present && g_frame.data.tag == OSDK_FRAME_DATA_FRAME_DATA) {
-        const osdk_frame_frame_data_t *fd = &g_frame.data.u.frame_data;
-        if (g_frame.is_ack) {
-            uint8_t cmd_set, cmd_id;
-            if (osdk_ack_table_take(&s->acks, g_frame.session, g_frame.seq, &cmd_set, &cmd_id)) {
-                r->ack_of = osdk_command_name(cmd_set, cmd_id);
-                if (osdk_payload_decode(fd->ack_value.ptr, fd->ack_value.len, cmd_set, cmd_id, true,
-                                        osdk_profile_enum_values[s->profile], &g_payload, &r->err) != OSDK_OK)
-                    return;
-                r->have_ack = true;
-            }
-        } else {
-            r->command = osdk_command_name(fd->cmd_set, fd->cmd_id);
-            if (g_frame.session > 0) osdk_ack_table_put(&s->acks, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
+    header_only = g_frame.len == OSDK_FRAME_HEADER_LEN;
+    plain = g_frame.data_present && g_frame.data.tag == OSDK_FRAME_DATA_FRAME_DATA;
+    if (g_frame.is_ack && (plain || header_only)) { /* a header-only ACK is matched too, its value empty */
+        uint8_t cmd_set, cmd_id;
+        if (osdk_acks_take(&s->acks, g_frame.session, g_frame.seq, &cmd_set, &cmd_id)) {
+            static const uint8_t none[1] = {0};
+            const uint8_t *value = plain ? g_frame.data.u.frame_data.ack_value.ptr : none;
+            size_t value_len = plain ? g_frame.data.u.frame_data.ack_value.len : 0;
+            r->ack_of = osdk_command_name(cmd_set, cmd_id);
+            if (osdk_payload_decode(value, value_len, cmd_set, cmd_id, true,
+                                    osdk_profile_enum_values[s->profile], &g_payload, &r->err) != OSDK_OK)
+                return;
+            r->have_ack = true;
         }
+    } else if (plain && !g_frame.is_ack) {
+        const osdk_frame_frame_data_t *fd = &g_frame.data.u.frame_data;
+        r->command = osdk_command_name(fd->cmd_set, fd->cmd_id);
+        osdk_acks_command(&s->acks, g_frame.session, g_frame.seq, fd->cmd_set, fd->cmd_id);
     }
     r->ok = true;
 }
@@ -402,7 +404,7 @@ static void op_decode_stream(okit_request *req)
     g_stream.profile = profile;
     g_stream.first_event = true;
     g_stream.out = w;
-    osdk_ack_table_init(&g_stream.acks, g_stream.pending, PENDING_LIMIT);
+    osdk_acks_init(&g_stream.acks);
     osdk_deframer_init(&d, g_window, sizeof g_window);
     osdk_json_begin_object(w);
     osdk_json_key(w, "events");
@@ -501,7 +503,7 @@ static int bench_main(int argc, char **argv)
     if (!in) return bench_fail("cannot read %s: %s", path, strerror(errno));
     memset(&g_stream, 0, sizeof g_stream);
     g_stream.profile = profile;
-    osdk_ack_table_init(&g_stream.acks, g_stream.pending, PENDING_LIMIT);
+    osdk_acks_init(&g_stream.acks);
     memset(&b, 0, sizeof b);
     b.stream = &g_stream;
     osdk_deframer_init(&d, g_window, sizeof g_window);

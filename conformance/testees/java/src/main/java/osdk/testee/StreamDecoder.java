@@ -1,6 +1,5 @@
 package osdk.testee;
 
-import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import io.kaitai.struct.KaitaiStruct;
@@ -11,19 +10,21 @@ import osdk_kaitai.OsdkFrame;
 
 /**
  * The events of one decode_stream: the library's Deframer and decodeFrame /
- * decodePayload, and ACK matching. An ACK's value is typed by the
- * command with the same session and SEQ seen earlier in the stream; at most
- * PENDING_LIMIT unanswered commands are remembered, the oldest forgotten
- * first. Without models, values stay as the parsers returned them (the
+ * decodePayload, and ACK matching (PROTOCOL.md "ACK matching", ERRATA E32):
+ * one slot per session 2..31; a plain command takes its session's slot, and
+ * an ACK in that session with the slot's SEQ (a header-only one too) is typed
+ * by that command and empties the slot. Sessions 0 and 1 have no slot.
+ * Without models, values stay as the parsers returned them (the
  * bench mode times decoding, not the value model).
  */
 final class StreamDecoder {
-    static final int PENDING_LIMIT = 1024;
+    static final int FIRST_ACK_SESSION = 2;
+    static final int LAST_ACK_SESSION = 31;
 
     private final String profile;
     private final boolean models;
-    // (session, seq) -> (cmd_set, cmd_id), in the order first seen
-    private final Map<Long, int[]> pending = new LinkedHashMap<>();
+    // by session: {seq, cmd_set, cmd_id} of the command waiting for its ACK, or null
+    private final int[][] slots = new int[LAST_ACK_SESSION + 1][];
 
     StreamDecoder(String profile, boolean models) {
         this.profile = profile;
@@ -59,33 +60,28 @@ final class StreamDecoder {
         out.put("offset", ev.offset());
         out.put("kind", "frame");
         OsdkFrame.FrameData data = Osdk.frameData(f);
-        if (data != null) {
-            long key = f.session() << 16 | f.seq();
-            if (f.isAck()) {
-                int[] cmd = pending.remove(key);
-                if (cmd != null) {
-                    String ackOf = Osdk.commandName(cmd[0], cmd[1]);
-                    out.put("ack_of", ackOf);
-                    byte[] value = data.ackValue();
-                    KaitaiStruct ack;
-                    try {
-                        ack = Osdk.decodePayload(value, cmd[0], cmd[1], true, profile);
-                    } catch (OsdkException r) {
-                        Map<String, Object> err = error(ev, r.errorClass(), r.detail());
-                        err.put("ack_of", ackOf);
-                        return err;
-                    }
-                    out.put("ack", models ? ValueModel.of(ack, value) : ack);
+        boolean headerOnly = f.len() == 12;
+        boolean hasSlot = f.session() >= FIRST_ACK_SESSION && f.session() <= LAST_ACK_SESSION;
+        if (f.isAck() && (data != null || headerOnly) && hasSlot) {
+            int[] cmd = slots[(int) f.session()];
+            if (cmd != null && cmd[0] == f.seq()) {
+                slots[(int) f.session()] = null;
+                String ackOf = Osdk.commandName(cmd[1], cmd[2]);
+                out.put("ack_of", ackOf);
+                byte[] value = data != null ? data.ackValue() : new byte[0]; // a header-only ACK's value is empty
+                KaitaiStruct ack;
+                try {
+                    ack = Osdk.decodePayload(value, cmd[1], cmd[2], true, profile);
+                } catch (OsdkException r) {
+                    Map<String, Object> err = error(ev, r.errorClass(), r.detail());
+                    err.put("ack_of", ackOf);
+                    return err;
                 }
-            } else if (f.session() > 0) {
-                // cmd_set_code: the number, also for a command set the spec has no name for
-                pending.put(key, new int[] {data.cmdSetCode(), data.cmdId()});
-                if (pending.size() > PENDING_LIMIT) {
-                    Iterator<Long> oldest = pending.keySet().iterator();
-                    oldest.next();
-                    oldest.remove();
-                }
+                out.put("ack", models ? ValueModel.of(ack, value) : ack);
             }
+        } else if (!f.isAck() && data != null && hasSlot) {
+            // cmd_set_code: the number, also for a command set the spec has no name for
+            slots[(int) f.session()] = new int[] {f.seq(), data.cmdSetCode(), data.cmdId()};
         }
         out.put("frame", models ? model : f);
         return out;
