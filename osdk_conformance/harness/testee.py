@@ -194,6 +194,7 @@ class Testee:
         self._out = bytearray()
         self._killed_by_us = False
         self._stderr_at_start = 0
+        self._answered = False   # a response came since the first start
         _LIVE.add(self)
 
     # ---- life cycle --------------------------------------------------------
@@ -281,7 +282,6 @@ class Testee:
 
     def request(self, obj: dict) -> dict:
         """Send one request, return the response object or raise."""
-        first_start = self._proc is None and not self.starts
         if self._proc is None:
             if self.starts:
                 if self.restarts_in_a_row >= self.max_restarts:
@@ -289,6 +289,8 @@ class Testee:
                                        f"({self.restarts_in_a_row} restarts without a successful response)")
                 self.restarts_in_a_row += 1
             self.start()
+        # the first start, whether this call or the caller started the testee
+        first_start = self.starts == 1 and not self._answered
         data = (json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n").encode()
         stderr_before = self.stderr.total
         try:
@@ -311,6 +313,7 @@ class Testee:
             raise TesteeFailure(TESTEE_GARBAGE, f"the response is not a response object ({problem}): {_show(line)}",
                                 self._stderr_since(stderr_before))
         self.restarts_in_a_row = 0
+        self._answered = True
         return response
 
     def _stderr_since(self, total_before: int, limit: int = 4096) -> str:

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from osdk_conformance.core.errors import UsageError
-from osdk_conformance.core.options import positive_int, uint32
+from osdk_conformance.core.options import baud_rate, positive_int, uint32
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
 from osdk_conformance.sdk.families import protocol
@@ -734,7 +734,7 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--frames", type=positive_int, default=500, help="broadcast frames to compare at 50 Hz (default 500)")
     ap.add_argument("--moves", type=positive_int, default=150, help="movement control commands to send (default 150)")
     ap.add_argument("--app-id", type=uint32, default=DEFAULT_APP_ID, help="app id to activate with")
-    ap.add_argument("--baud", type=int, choices=BAUDS, default=BAUD,
+    ap.add_argument("--baud", type=baud_rate, choices=BAUDS, default=BAUD,
                     help="line speed of the host and the simulator (default 230400); a rate the release's Linux "
                          "serial driver does not set is reported SKIP with the place in its source")
     ap.add_argument("--encrypt", action="store_true",
