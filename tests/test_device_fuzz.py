@@ -225,7 +225,8 @@ def test_each_planted_bug_is_found_confirmed_and_minimised(bug, tmp_path):
     assert stats["bug_triggers"][bug] >= 2   # found, then triggered again by the replays
     [f] = out.findings
     assert f.confirmed is True and f.from_capture
-    assert sum(out.sent.values()) <= 60, "found within the first rounds of the kinds"
+    # the kinds take turns; the vector kinds reach a long frame later since the vectors grew (issue 25)
+    assert sum(out.sent.values()) <= 6 * len(out.sent), "found within the first six rounds of the kinds"
     [case] = f.reproducer
     data = case.data
     if bug == "long-frame-hang":
