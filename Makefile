@@ -9,7 +9,7 @@ ACCEL_OK  := $(VENV)/.accel-built
 ACCEL_SRC := osdk_conformance/reference/_accel.c $(wildcard generated/c/*.[ch] generated/cpython/*.[ch])
 JS_OK  := tools/ksc/node_modules/.installed
 
-.PHONY: setup system-packages testees examples kit test quick regen check-generated vectors bench fuzz clean
+.PHONY: setup system-packages testees examples kit test quick properties regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
@@ -80,6 +80,14 @@ test: setup check-generated
 quick: setup
 	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow and not realtime' -n $(JOBS) --dist loadfile
 	$(BIN)/pytest -q -m 'realtime and not slow'
+
+# The long property campaign: every hypothesis property of the suite with
+# 10,000 randomized examples each (the suite's own run is 1,000, fixed), the
+# Kaitai-vs-Construct differential test above all. About an hour on 2 cores.
+PROPERTY_TESTS := tests/test_kaitai_vs_construct.py tests/test_crc.py tests/test_construct_spec.py \
+                  tests/test_deframe.py tests/test_stream_properties.py tests/test_construct_compiled.py
+properties: setup
+	OSDK_HYPOTHESIS_PROFILE=campaign $(BIN)/pytest -q -n $(JOBS) --dist loadfile $(PROPERTY_TESTS)
 
 # Benchmarks (docs/PERFORMANCE.md): every section, the full corpora; rewrites
 # the results block of docs/PERFORMANCE.md. Takes tens of minutes.

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import os
+from pathlib import Path
 from typing import Callable, Sequence
 
 from kaitaistruct import BytesIO, KaitaiStream
@@ -26,7 +27,7 @@ from osdk_kaitai.osdk_frame import OsdkFrame
 from osdk_kaitai.osdk_payload import OsdkPayload
 
 from osdk_conformance.core import model
-from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.paths import CHECKOUT, REPORTS
 from osdk_conformance.core.rules import profile_names
 from osdk_conformance.device.acceptance import add_arguments as device_arguments, run_device
@@ -95,16 +96,16 @@ def _command(name: str, add_arguments: Callable, run: Callable, *argv: str) -> i
         return 2
 
 
-def _acceptance_on_simulator() -> int:
+def _acceptance_on_simulator(reports: Path) -> int:
     """`osdkc device --active` against `osdkc sim` on a pseudo-terminal: what
     a bench acceptance run of a real flight controller does, without one."""
     app_id = "1234"  # what the simulated FC accepts, as a configured app would be
     print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc device --active", flush=True)
     try:
-        with spawned("--profile", "a3-fw3.1", "--app-id", app_id) as (url, _):
+        with spawned("--profile", "a3-fw3.1", "--app-id", app_id, new_session=True) as (url, _):
             return _command("device", device_arguments, run_device, "--port", url, "--profile", "a3-fw3.1", "--duration", "5", "--active",
-                          "--app-id", app_id, "--quiet", "--capture", str(REPORTS / "device.pcapng"),
-                          "--html", str(REPORTS / "device.html"), "--junit", str(REPORTS / "device.xml"))
+                          "--app-id", app_id, "--quiet", "--capture", str(reports / "device.pcapng"),
+                          "--html", str(reports / "device.html"), "--junit", str(reports / "device.xml"))
     except UsageError as e:
         print(f"  {e}")
         return 1
@@ -113,15 +114,15 @@ def _acceptance_on_simulator() -> int:
 FUZZ_CASES = 600   # two rounds of every case kind and more: about 3 s at 921600 baud
 
 
-def _fuzz_on_simulator() -> int:
+def _fuzz_on_simulator(reports: Path) -> int:
     """`osdkc fuzz --port` against a healthy `osdkc sim`: it must survive every case."""
     print("== osdkc sim --profile a3-fw3.1 --pty  +  osdkc fuzz --port", flush=True)
     try:
-        with spawned("--profile", "a3-fw3.1") as (url, _):
+        with spawned("--profile", "a3-fw3.1", new_session=True) as (url, _):
             return _command("fuzz", fuzz_arguments, run_fuzz, "--port", url, "--profile", "a3-fw3.1", "--baud",
                             "921600", "--cases", str(FUZZ_CASES), "--seed", "1", "--quiet",
-                            "--capture", str(REPORTS / "fuzz.pcapng"), "--findings-dir", str(REPORTS / "fuzz-findings"),
-                            "--html", str(REPORTS / "fuzz.html"), "--junit", str(REPORTS / "fuzz.xml"))
+                            "--capture", str(reports / "fuzz.pcapng"), "--findings-dir", str(reports / "fuzz-findings"),
+                            "--html", str(reports / "fuzz.html"), "--junit", str(reports / "fuzz.xml"))
     except UsageError as e:
         print(f"  {e}")
         return 1
@@ -129,6 +130,9 @@ def _fuzz_on_simulator() -> int:
 
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
     add_seed_argument(p)
+    p.add_argument("--report-dir", default=str(REPORTS), metavar="DIR",
+                   help=f"where the reports go (default {REPORTS}); in a checkout the run step also renders "
+                        "the status section of generated/README.md from them")
 
 
 def run_kit(args: argparse.Namespace | None = None) -> int:
@@ -144,23 +148,42 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
                 print(f"          {p}")
             passed += not problems
             failed += bool(problems)
-    REPORTS.mkdir(exist_ok=True)
-    steps = [("run", run_arguments, run_command, "--impl", ALL, "--report-dir", str(REPORTS)),
-             ("selftest", selftest_arguments, run_selftest)]
-    for step in steps:
-        ok = _command(*step) == 0
-        passed += ok
-        failed += not ok
-    if CHECKOUT:  # the status section of the checkout's generated/README.md; an installed package is not written to
-        status_readme.update(REPORTS / "conformance.json")
-    for on_simulator in (_acceptance_on_simulator, _fuzz_on_simulator):
-        ok = on_simulator() == 0
-        passed += ok
-        failed += not ok
+    reports = Path(args.report_dir) if args is not None else REPORTS
+    try:
+        reports.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise UsageError(f"--report-dir {reports}: {e.strerror or e}") from None
+    steps: list[tuple[str, Callable[[], int]]] = [
+        ("run", lambda: _command("run", run_arguments, run_command, "--impl", ALL, "--report-dir", str(reports))),
+        ("selftest", lambda: _command("selftest", selftest_arguments, run_selftest)),
+        ("device", lambda: _acceptance_on_simulator(reports)),
+        ("fuzz", lambda: _fuzz_on_simulator(reports)),
+    ]
     if os.environ.get("OSDK_SRC"):   # DJI's own host stack from the user's checkout against the simulator
-        ok = _command("sdk host-test", host_test_arguments, run_host_test, "--osdk", os.environ["OSDK_SRC"]) == 0
-        passed += ok
-        failed += not ok
-    print(f"reports: {REPORTS}/")
+        steps.append(("sdk host-test", lambda: _command("sdk host-test", host_test_arguments, run_host_test,
+                                                        "--osdk", os.environ["OSDK_SRC"])))
+    for n, (name, step) in enumerate(steps):
+        try:
+            status = step()
+        except KeyboardInterrupt:  # a Ctrl-C outside the step's own handling (its start, its end)
+            status = exit_status_of_signal("SIGINT")
+        if status in INTERRUPTED:
+            # The step wrote its own partial reports marked interrupted; the
+            # later steps do not run, so the reports they left stay as they were.
+            print(f"reports: {reports}/")
+            later = ", ".join(s for s, _ in steps[n + 1:]) or "none"
+            print(f"kit: INTERRUPTED by {INTERRUPTED[status]} during {name}: {passed} passed, {failed} failed "
+                  f"before it; not run: {later}")
+            return status
+        passed += status == 0
+        failed += status != 0
+        # the status section of the checkout's generated/README.md, from the
+        # checkout's own reports only; an installed package is not written to
+        if name == "run" and CHECKOUT and reports.resolve() == REPORTS.resolve():
+            status_readme.update(reports / "conformance.json")
+    print(f"reports: {reports}/")
     print(f"kit: {passed} passed, {failed} failed")
     return 1 if failed else 0
+
+
+INTERRUPTED = {exit_status_of_signal(name): name for name in ("SIGINT", "SIGTERM")}

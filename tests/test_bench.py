@@ -191,7 +191,7 @@ def test_device_fuzz_section_reports_each_baud_rate(tmp_path):
     dfz = result["device_fuzz"]
     assert dfz["ok"] and [r["baud"] for r in dfz["rows"]] == list(DEVICE_FUZZ_BAUDS)
     for r in dfz["rows"]:
-        assert r["ok"] and r["verdict"] == "NO FINDING" and r["findings"] == 0, r
+        assert r["ok"] and r["verdict"] == "NOTHING FOUND" and r["findings"] == 0, r
         assert r["cases"] == cases and f"--baud {r['baud']} --cases {cases} --seed 1" in r["command"]
         for key in ("seconds", "cases_per_s", "bytes_per_case", "line_cases_per_s", "share_of_line"):
             assert r[key] > 0, (key, r)
@@ -208,9 +208,9 @@ def test_a_device_fuzz_failure_is_missed_not_reported():
     from osdk_conformance.bench.report import _device_fuzz_targets, _target_verdict
 
     good = {"baud": 921600, "ok": True, "cases_per_s": 900.0, "share_of_line": 0.8}
-    bad = {"baud": 230400, "ok": False, "cases_per_s": 10.0, "error": "1 FINDING(S) on a healthy simulator"}
+    bad = {"baud": 230400, "ok": False, "cases_per_s": 10.0, "error": "FOUND 1 on a healthy simulator"}
     (t,) = _device_fuzz_targets({"ok": False, "rows": [good, bad]})
     assert _target_verdict(t) == "MISSED"
-    assert t["measured"].endswith("FAILED: 230400 baud: 1 FINDING(S) on a healthy simulator")
+    assert t["measured"].endswith("FAILED: 230400 baud: FOUND 1 on a healthy simulator")
     (t,) = _device_fuzz_targets({"ok": True, "rows": [good]})
     assert _target_verdict(t) == "reported, no target" and t["measured"] == "900 cases/s at 921600 baud (80% of what the line carries)"

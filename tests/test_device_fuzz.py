@@ -260,7 +260,7 @@ def test_the_command_line_finds_replays_and_reports(tmp_path):
                                      "--findings-dir", "found", "--capture", "f.pcapng", "--junit", "f.xml",
                                      "--html", "f.html"], capture_output=True, text=True, cwd=tmp_path, timeout=120)
     assert done.returncode == 1, done.stdout + done.stderr
-    assert "1 FINDING(S)" in done.stdout and "minimised to 1 case(s), 12 byte(s)" in done.stdout
+    assert "FOUND 1: " in done.stdout and "minimised to 1 case(s), 12 byte(s)" in done.stdout
     [repro] = (tmp_path / "found").glob("*.repro.json")
     suite = ET.parse(tmp_path / "f.xml").getroot()
     failures = [tc.get("name") for tc in suite.iter("testcase") if tc.find("failure") is not None]
@@ -269,12 +269,12 @@ def test_the_command_line_finds_replays_and_reports(tmp_path):
     assert "Liveness timeline" in html and "<svg" in html
     comments = {r.comment for r in read_capture(tmp_path / "f.pcapng").records if r.direction == TX}
     assert "length.1" in comments and any(c.startswith("finding 1 trial") for c in comments)
-    for bugs, status, word in (([], 0, "not reproduced"), (["--bug", "long-frame-hang"], 1, "REPRODUCED")):
+    for bugs, status, word in (([], 0, "NOT REPRODUCED: "), (["--bug", "long-frame-hang"], 1, "REPRODUCED: ")):
         with spawned(*bugs) as (url, _):
             again = subprocess.run(CLI + ["--port", url, "--profile", PROFILE, "--replay", str(repro),
                                           "--ack-timeout", "0.3", "--no-capture"],
                                    capture_output=True, text=True, cwd=tmp_path, timeout=60)
-        assert again.returncode == status and word in again.stdout, again.stdout + again.stderr
+        assert again.returncode == status and f"osdkc fuzz: {word}" in again.stdout, again.stdout + again.stderr
 
 
 def _interrupt(tmp: Path, sig: int, extra: tuple[str, ...]) -> tuple[int, dict, str, list]:
@@ -299,7 +299,7 @@ def _interrupt(tmp: Path, sig: int, extra: tuple[str, ...]) -> tuple[int, dict, 
 @pytest.mark.realtime
 @pytest.mark.parametrize("sig, status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
 def test_an_interrupted_motion_session_releases_control_and_restores_the_rates(sig, status, tmp_path):
-    code, stats, out, frames = _interrupt(tmp_path, sig, ("--allow-motion", "--app-id", "7",
+    code, stats, out, frames = _interrupt(tmp_path, sig, ("--allow-motion", "--yes", "--app-id", "7",
                                                           "--kind", "movement.zero", "--kind", "command.frequency",
                                                           "--kind", "generated.frame"))
     assert code == status, out
@@ -392,7 +392,7 @@ def test_motion_options_need_allow_motion(args, message, tmp_path):
 @pytest.mark.realtime
 def test_movement_cases_alone_send_nothing_when_control_is_refused(tmp_path):
     with spawned("--app-id", "7") as (url, _):   # activation with another app id is refused
-        done = subprocess.run(CLI + ["--port", url, "--profile", PROFILE, "--allow-motion", "--app-id", "8",
+        done = subprocess.run(CLI + ["--port", url, "--profile", PROFILE, "--allow-motion", "--yes", "--app-id", "8",
                                      "--kind", "movement.zero", "--cases", "50", "--no-capture", "--ack-timeout",
                                      "0.3"], capture_output=True, text=True, cwd=tmp_path, timeout=60)
     assert done.returncode == 1 and "NOTHING FUZZED: 0 cases" in done.stdout, done.stdout

@@ -30,7 +30,7 @@ from osdk_conformance.sim.simulator import spawned
 pytestmark = pytest.mark.realtime
 
 APP = "1234"
-ACTIVE = ("--profile", "a3-fw3.1", "--duration", "0.5", "--active", "--allow-motion", "--app-id", APP,
+ACTIVE = ("--profile", "a3-fw3.1", "--duration", "0.5", "--active", "--allow-motion", "--yes", "--app-id", APP,
           "--active-window", "0.5", "--motion-seconds", "0.4", "--max-jitter-ms", "150")
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
 SET_FREQUENCY, CONTROL, MOVEMENT = (0x00, 0x10), (0x01, 0x00), (0x01, 0x03)
@@ -175,8 +175,8 @@ def test_sigterm_while_listening_writes_the_reports(tmp_path):
 
 
 def test_active_without_app_id_skips_what_needs_activation(tmp_path):
-    args = ("--profile", "a3-fw3.1", "--duration", "0.5", "--active", "--allow-motion", "--active-window", "0.5",
-            "--motion-seconds", "0.4", "--max-jitter-ms", "150")
+    args = ("--profile", "a3-fw3.1", "--duration", "0.5", "--active", "--allow-motion", "--yes",
+            "--active-window", "0.5", "--motion-seconds", "0.4", "--max-jitter-ms", "150")
     r = run_interrupted(tmp_path, [], [], device_args=args)
     assert r["rc"] == 0, r["out"]
     for cid in ("active.activation", "active.control_obtain", "active.movement", "active.control_release"):

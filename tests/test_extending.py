@@ -142,7 +142,7 @@ def test_the_vectors_cover_the_new_item(extended: tuple[Path, dict[str, str]]) -
 def test_python_and_c_conform_on_the_new_profile(extended: tuple[Path, dict[str, str]], impl: str) -> None:
     repo, _ = extended
     summary = repo / f"{impl}-summary.json"
-    osdkc(extended, "run", "--impl", impl, "--profile", NEW, "--no-progress", "--jobs", "1",
+    osdkc(extended, "run", "--impl", impl, "--profile", NEW, "--quiet", "--jobs", "1",
           "--report-dir", str(repo / "reports"), "--summary-json", str(summary))
     got = json.loads(summary.read_text())
     assert got["conforms"] and got["complete"], got["verdict_line"]

@@ -73,9 +73,9 @@ def test_a_mutant_is_found_and_the_vector_replays(name, op_hint, tmp_path):
     errors = sorted(validator().iter_errors(doc), key=str)
     assert not errors, [e.message for e in errors]
 
-    good = osdkc("run", "--impl", "construct", "--vectors", str(out), "--no-progress")
+    good = osdkc("run", "--impl", "construct", "--vectors", str(out), "--quiet")
     assert good.returncode == 0, good.stdout
-    bad = osdkc("run", "--testee", mutant(name), "--vectors", str(out), "--no-progress")
+    bad = osdkc("run", "--testee", mutant(name), "--vectors", str(out), "--quiet")
     assert bad.returncode == 1, bad.stdout
     assert test["id"] in bad.stdout
 
@@ -108,3 +108,13 @@ def test_usage_errors():
     assert one.returncode == 2 and "at least two" in one.stderr
     dead = osdkc("fuzz", "--impl", "construct", "--testee", "/no/such/testee", "--max-examples", "1")
     assert dead.returncode == 2 and "Traceback" not in dead.stderr
+
+
+def test_nothing_is_written_into_the_working_directory(tmp_path):
+    # hypothesis keeps a cache of its own; it goes to the kit's cache folder
+    out = tmp_path / "found.json"
+    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "fuzz", "--impl", "construct", "--impl",
+                           "accel", "--max-examples", "30", "--out", str(out)], capture_output=True, text=True,
+                          timeout=300, cwd=tmp_path)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == [], list(tmp_path.iterdir())

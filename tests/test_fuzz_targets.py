@@ -22,8 +22,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
 GO_DIR = ROOT / "conformance" / "testees" / "go"
-GO_SMOKE_EXECS = 400_000   # about what SMOKE_SECONDS give on 2 cores (20k-30k execs/s)
-SMOKE_SECONDS = 20
+GO_SMOKE_EXECS = 150_000   # about what SMOKE_SECONDS give on 2 cores (15k-30k execs/s)
+SMOKE_SECONDS = 10
 CLANG, CLANGXX = "clang-14", "clang++-14"
 
 sys.path.insert(0, str(ROOT / "tools"))
@@ -146,7 +146,7 @@ def test_stream_artifact_becomes_a_vector_with_the_reference_answer(tmp_path):
         [e["error"] for e in ref["result"]["events"] if e["kind"] == "error"]
     assert "bad_crc32" in [e.get("error") for e in test["expected"]["events"]]
     run = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--impl", "construct", "--vectors",
-                          str(vec), "--no-progress"], capture_output=True, text=True, cwd=ROOT, timeout=300)
+                          str(vec), "--quiet"], capture_output=True, text=True, cwd=ROOT, timeout=300)
     assert run.returncode == 0 and "CONFORMS" in run.stdout, run.stdout[-2000:] + run.stderr[-2000:]
 
 

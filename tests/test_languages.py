@@ -68,7 +68,7 @@ def test_c_decoder_never_allocates():
 def test_sanitized_c_testee_conforms_over_every_vector(tmp_path):
     ok(make(C_DIR, "sanitize"))
     summary = tmp_path / "asan.json"
-    proc = osdkc("run", "--testee", str(C_DIR / "build" / "osdk-c-testee-asan"), "--no-progress",
+    proc = osdkc("run", "--testee", str(C_DIR / "build" / "osdk-c-testee-asan"), "--quiet",
                  "--summary-json", str(summary))
     out = ok(proc)
     assert "CONFORMS" in out
@@ -110,10 +110,10 @@ def test_glue_names_no_profile_and_no_broadcast_item_type():
 
 @pytest.mark.slow
 def test_libfuzzer_smoke_runs_find_nothing():
-    # Both targets at once, 30 s each, seeded from vectors/ (a smoke run:
+    # Both targets at once, 10 s each, seeded from vectors/ (a smoke run:
     # `make fuzz` is the long one). A finding makes libFuzzer exit non-zero
     # and leaves the input in build/findings/.
-    proc = make(C_DIR, "-j2", "fuzz-smoke", FUZZ_SECONDS="30", timeout=600)
+    proc = make(C_DIR, "-j2", "fuzz-smoke", FUZZ_SECONDS="10", timeout=600)
     out = ok(proc)
     assert out.count("stat::number_of_executed_units") == 2
     assert "ERROR: libFuzzer" not in out and "AddressSanitizer" not in out

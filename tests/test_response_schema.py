@@ -281,7 +281,7 @@ def _run_altered_reference(tmp_path, alter: str):
         f"{body}"
         "    print(json.dumps(res), flush=True)\n")
     return subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--testee",
-                           f"{sys.executable} {testee}", "--filter", "control_mode.a3-fw3.1.0x4", "--no-progress"],
+                           f"{sys.executable} {testee}", "--filter", "control_mode.a3-fw3.1.0x4", "--quiet"],
                           capture_output=True, text=True, cwd=ROOT, timeout=120)
 
 

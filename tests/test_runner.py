@@ -122,7 +122,7 @@ def test_a_listed_case_that_passes_fails_the_run(cases, tmp_path):
     flist = tmp_path / "failures.txt"
     flist.write_text(f"# expected failures\n{case_id}   # listed, but construct passes it\n")
     # --filter on the full vector set: the listed case and whatever else contains its id.
-    proc = osdkc("run", "--impl", "construct", "--filter", case_id, "--failure-list", str(flist), "--no-progress")
+    proc = osdkc("run", "--impl", "construct", "--filter", case_id, "--failure-list", str(flist), "--quiet")
     assert proc.returncode == 1, proc.stdout
     assert "remove it from the list" in proc.stdout and case_id in proc.stdout
 
@@ -133,7 +133,7 @@ def test_a_failing_testee_passes_with_its_failures_listed(cases, tmp_path):
     cmd = command_for("wrong_answers", *broken)
     xml, page = tmp_path / "r.xml", tmp_path / "r.html"
 
-    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--quiet", "--junit", str(xml),
                  "--html", str(page))
     assert proc.returncode == 1, proc.stdout
     assert all(i in proc.stdout for i in broken)
@@ -149,7 +149,7 @@ def test_a_failing_testee_passes_with_its_failures_listed(cases, tmp_path):
 
     flist = tmp_path / "failures.txt"
     flist.write_text("".join(f"{i}\n" for i in broken))
-    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--failure-list", str(flist),
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--quiet", "--failure-list", str(flist),
                  "--junit", str(xml))
     assert proc.returncode == 0, proc.stdout
     assert junit(xml).get("failures") == "0" and "CONFORMS" in proc.stdout
@@ -160,7 +160,7 @@ def test_unknown_ids_in_the_failure_list_are_errors(cases, tmp_path):
     flist = tmp_path / "failures.txt"
     flist.write_text("no.such.case.id\n")
     xml = tmp_path / "r.xml"
-    proc = osdkc("run", "--impl", "construct", "--vectors", str(vec), "--failure-list", str(flist), "--no-progress",
+    proc = osdkc("run", "--impl", "construct", "--vectors", str(vec), "--failure-list", str(flist), "--quiet",
                  "--junit", str(xml))
     assert proc.returncode == 1
     assert "no.such.case.id" in proc.stdout
@@ -185,7 +185,7 @@ def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, 
     vec, ids = subset(cases, tmp_path, "decode_frame", 3)
     xml, page = tmp_path / "r.xml", tmp_path / "r.html"
     # a hang here would hit the subprocess timeout and fail the test
-    proc = osdkc("run", "--testee", command_for(name), "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+    proc = osdkc("run", "--testee", command_for(name), "--vectors", str(vec), "--quiet", "--junit", str(xml),
                  "--html", str(page), *extra, timeout=120)
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "Traceback" not in proc.stderr
@@ -197,14 +197,14 @@ def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, 
 
 def test_misbehaving_testee_in_a_filtered_run_of_the_real_vectors(cases):
     case_id = next(c.id for c in cases if c.operation == "decode_frame")
-    proc = osdkc("run", "--testee", command_for("sleeper"), "--filter", case_id, "--timeout", "0.3", "--no-progress")
+    proc = osdkc("run", "--testee", command_for("sleeper"), "--filter", case_id, "--timeout", "0.3", "--quiet")
     assert proc.returncode == 1 and "testee_timeout" in proc.stdout
 
 
 def test_a_testee_that_keeps_failing_ends_the_run(cases, tmp_path):
     vec, ids = subset(cases, tmp_path, "classify_control_mode", 10)
     xml = tmp_path / "r.xml"
-    proc = osdkc("run", "--testee", command_for("exit_first"), "--vectors", str(vec), "--no-progress",
+    proc = osdkc("run", "--testee", command_for("exit_first"), "--vectors", str(vec), "--quiet",
                  "--junit", str(xml))
     assert proc.returncode == 1
     assert "run aborted" in proc.stdout
@@ -214,7 +214,7 @@ def test_a_testee_that_keeps_failing_ends_the_run(cases, tmp_path):
 
 
 def test_a_testee_that_does_not_start_is_a_usage_error():
-    proc = osdkc("run", "--testee", "/nonexistent/testee --flag", "--no-progress")
+    proc = osdkc("run", "--testee", "/nonexistent/testee --flag", "--quiet")
     assert proc.returncode == 2
     assert "cannot start testee" in proc.stderr and "Traceback" not in proc.stderr
 
@@ -226,7 +226,7 @@ def test_a_testee_that_does_not_start_is_a_usage_error():
     (["--impl", "construct", "--junit", "/nonexistent/dir/r.xml"], "--junit"),
 ])
 def test_usage_errors_exit_2_without_traceback(args, message):
-    proc = osdkc("run", *args, "--no-progress")
+    proc = osdkc("run", *args, "--quiet")
     assert proc.returncode == 2, proc.stdout
     assert message in proc.stderr and "Traceback" not in proc.stderr
 
@@ -248,7 +248,7 @@ def test_a_testee_that_runs_nothing_gets_no_verdict(cases, tmp_path, claims):
     vec = mixed_vectors(cases, tmp_path, {"classify_control_mode": 3, "decode_frame": 2})
     xml, page, summary = tmp_path / "r.xml", tmp_path / "r.html", tmp_path / "s.json"
     cmd = command_for("claims_nothing", *(["--all"] if claims == "everything" else []))
-    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--no-progress", "--junit", str(xml),
+    proc = osdkc("run", "--testee", cmd, "--vectors", str(vec), "--quiet", "--junit", str(xml),
                  "--html", str(page), "--summary-json", str(summary))
     assert proc.returncode == 4, proc.stdout + proc.stderr
     assert "CONFORMS" not in proc.stdout
@@ -266,7 +266,7 @@ def test_a_testee_that_runs_nothing_gets_no_verdict(cases, tmp_path, claims):
 def test_a_partial_testee_conforms_only_for_what_ran(cases, tmp_path):
     vec = mixed_vectors(cases, tmp_path, {"classify_control_mode": 3, "decode_frame": 2})
     xml, summary = tmp_path / "r.xml", tmp_path / "s.json"
-    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--vectors", str(vec), "--no-progress",
+    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--vectors", str(vec), "--quiet",
                  "--junit", str(xml), "--summary-json", str(summary))
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert proc.stdout.rstrip().splitlines()[-1] == "CONFORMS for classify_control_mode: 3 of 5 cases"
@@ -317,7 +317,7 @@ def _copy(src: Path, tmp_path: Path) -> Path:
                                      "same ids in two files", "shipped file twice under two names", "not JSON"])
 def test_run_vectors_validates_the_files_like_vectors_check(cases, tmp_path, variant):
     files, problem = _vector_file_variants(cases, tmp_path)[variant]
-    proc = osdkc("run", "--testee", command_for("claims_nothing"), "--no-progress",
+    proc = osdkc("run", "--testee", command_for("claims_nothing"), "--quiet",
                  *(a for f in files for a in ("--vectors", f)))
     assert proc.returncode == 2, proc.stdout + proc.stderr
     assert problem in proc.stderr and "Traceback" not in proc.stderr
@@ -348,7 +348,7 @@ def test_an_interrupted_run_writes_partial_reports_and_leaves_no_testee(cases, t
     xml, page, summary = tmp_path / "r.xml", tmp_path / "r.html", tmp_path / "s.json"
     proc = subprocess.Popen(
         [sys.executable, "-m", "osdk_conformance.cli", "run", "--testee", command_for("stalls_after", "4", str(marker)),
-         "--vectors", str(vec), "--timeout", "300", "--no-progress", "--junit", str(xml), "--html", str(page),
+         "--vectors", str(vec), "--timeout", "300", "--quiet", "--junit", str(xml), "--html", str(page),
          "--summary-json", str(summary)],
         cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     pgid = None
@@ -468,7 +468,7 @@ def readme_testee(tmp_path: Path) -> str:
 
 def test_the_readme_example_testee_conforms(cases, tmp_path):
     xml = tmp_path / "r.xml"
-    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--no-progress", "--junit", str(xml))
+    proc = osdkc("run", "--testee", readme_testee(tmp_path), "--quiet", "--junit", str(xml))
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-2000:]
     root = junit(xml)
     ran = [tc for tc in root.iter("testcase") if tc.find("skipped") is None]
@@ -555,7 +555,7 @@ def test_every_bundled_implementation_has_a_reviewed_failure_list() -> None:
 
 def test_impl_is_repeatable_and_runs_the_chosen_implementations_side_by_side(tmp_path: Path) -> None:
     proc = osdkc("run", "--impl", "construct", "--impl", "kaitai-python", "--filter", "worked",
-                 "--report-dir", str(tmp_path), "--no-progress")
+                 "--report-dir", str(tmp_path), "--quiet")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "2 implementations" in proc.stdout and "ALL CONFORM" in proc.stdout
     ran = json.loads((tmp_path / "conformance.json").read_text())["implementations"]

@@ -286,7 +286,7 @@ def test_sdk_test_runs_both_variants_and_reports_what_ran(tmp_path, capsys, monk
     tree = fake_sdk(tmp_path / "sdk")
     junit, page = tmp_path / "r.xml", tmp_path / "r.html"
     code, out, err = osdkc(capsys, "sdk", "test", "--osdk", str(tree), "--out", str(cache), "--filter", FEW,
-                           "--junit", str(junit), "--html", str(page), "--no-progress")
+                           "--junit", str(junit), "--html", str(page), "--quiet")
     assert code == 0, out + err
     assert "how error classes were derived" in out and f"bad_length: {DERIVED['bad_length']}" in out
     assert out.count("claimed: encode_movement_control; profiles none") == 2
@@ -307,7 +307,7 @@ def test_a_sanitizer_crash_is_a_testee_crash_with_its_finding(tmp_path, capsys, 
     tree = fake_sdk(tmp_path / "sdk")
     junit = tmp_path / "r.xml"
     code, out, err = osdkc(capsys, "sdk", "test", "--osdk", str(tree), "--out", str(cache), "--filter",
-                           r"^encode\.movement_control\.mode\.0x0[01]$", "--junit", str(junit), "--no-progress")
+                           r"^encode\.movement_control\.mode\.0x0[01]$", "--junit", str(junit), "--quiet")
     assert code == 1, out + err
     assert "ASan/UBSan: DOES NOT CONFORM (2 failed; 2 of 2 cases ran)" in out
     assert "testee failures: testee_crash 2" in out
@@ -326,7 +326,7 @@ from osdk_conformance import cli
 from osdk_conformance.sdk import testee_build
 adapter, tree, out = map(Path, sys.argv[1:4])
 testee_build.FAMILIES = (t.fake_family(adapter, version="0.3"),)
-sys.exit(cli.main(["sdk", "test", "--osdk", str(tree), "--out", str(out), "--no-progress",
+sys.exit(cli.main(["sdk", "test", "--osdk", str(tree), "--out", str(out), "--quiet",
                    "--filter", r"^encode\\.movement_control\\.mode\\.", "--junit", str(out / "r.xml")]))
 """
 
@@ -377,7 +377,7 @@ def test_every_release_decodes_the_valid_broadcast_frame_of_each_profile_it_clai
     # showed: the SDK's receive path and unpacker agree with the spec on a
     # valid broadcast frame, plain and under ASan/UBSan
     out_dir = tmp_path_factory.getbasetemp() / "osdk-sdk"
-    code, out, err = osdkc(capsys, "sdk", "test", "--osdk", OSDK_SRC, "--out", str(out_dir), "--no-progress",
+    code, out, err = osdkc(capsys, "sdk", "test", "--osdk", OSDK_SRC, "--out", str(out_dir), "--quiet",
                            "--filter", r"^frames\.(m100-fw2\.3|m100-fw3\.1|a3-fw3\.1)\.broadcast$",
                            "--junit", str(tmp_path / "r.xml"))
     assert code == 0, out + err
@@ -393,7 +393,7 @@ def test_the_receive_path_of_the_checkout_is_found_wanting(capsys, tmp_path_fact
     # every release tried accepts what it should reject (docs/SDK-FINDINGS.md):
     # the suite must say so, and name no crash of its own
     out_dir = tmp_path_factory.getbasetemp() / "osdk-sdk"
-    code, out, err = osdkc(capsys, "sdk", "test", "--osdk", OSDK_SRC, "--out", str(out_dir), "--no-progress",
+    code, out, err = osdkc(capsys, "sdk", "test", "--osdk", OSDK_SRC, "--out", str(out_dir), "--quiet",
                            "--filter", r"^frames\.[^ ]+\.(header_bits\.ver\.|enc\.)")
     assert code == 1, out + err
     assert "plain: DOES NOT CONFORM" in out and "Traceback" not in err

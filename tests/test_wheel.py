@@ -72,7 +72,7 @@ def test_it_runs_from_the_installed_package(installed) -> None:
 
 
 def test_the_installed_accelerator_conforms(installed) -> None:
-    out = ok(osdkc(installed, "run", "--impl", "accel", "--profile", "m100-fw2.3", "--no-progress"))
+    out = ok(osdkc(installed, "run", "--impl", "accel", "--profile", "m100-fw2.3", "--quiet"))
     assert "CONFORMS for decode_frame, decode_payload, decode_stream" in out
 
 
@@ -92,7 +92,7 @@ def test_without_a_compiler_the_install_goes_on_in_pure_python(wheel, tmp_path) 
     env["OSDKC_ACCEL"] = "1"
     proc = run([venv / "bin/osdkc", "decode", "--profile", wf.profile, "--hex", wf.hex], cwd=tmp_path, env=env)
     assert proc.returncode == 2 and "native decoder is not installed" in proc.stderr
-    proc = run([venv / "bin/osdkc", "run", "--impl", "all", "--filter", "worked", "--no-progress"],
+    proc = run([venv / "bin/osdkc", "run", "--impl", "all", "--filter", "worked", "--quiet"],
                cwd=tmp_path, env={**env, "OSDKC_ACCEL": ""})
     assert "not run: accel: the native decoder was not compiled" in proc.stdout
 
@@ -119,7 +119,7 @@ def test_vectors_check_and_coverage(installed) -> None:
 @pytest.mark.parametrize("impl", ["construct", "kaitai-python"])
 def test_run_a_bundled_python_implementation(installed, impl: str) -> None:
     out = ok(osdkc(installed, "run", "--impl", impl, "--profile", "a3-fw3.1", "--filter", "worked",
-                   "--no-progress"))
+                   "--quiet"))
     assert "CONFORMS" in out
 
 

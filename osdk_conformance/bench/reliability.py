@@ -42,8 +42,9 @@ OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
 PROFILE, APP_ID = "a3-fw3.1", "1234"
 # Short steps, as in the tests' active scenario; the default limits.
-HEALTHY_DEVICE_ARGS = ("--profile", PROFILE, "--duration", "1", "--active", "--allow-motion", "--app-id", APP_ID,
-                       "--active-window", "1", "--motion-seconds", "1.2")
+# --yes: a child process cannot answer the --allow-motion question.
+HEALTHY_DEVICE_ARGS = ("--profile", PROFILE, "--duration", "1", "--active", "--allow-motion", "--yes",
+                       "--app-id", APP_ID, "--active-window", "1", "--motion-seconds", "1.2")
 PASSIVE_DEVICE_ARGS = ("--profile", PROFILE, "--duration", "2.5")
 RUN_TIMEOUT = 120.0
 

@@ -32,7 +32,7 @@ def _failure(child: bench_child.Child) -> str:
 def conformance_run(timeout: float) -> dict:
     """Wall and CPU time of `osdkc run --impl all` (reports to a temporary directory)."""
     with tempfile.TemporaryDirectory(prefix="osdkc-bench-run-") as tmp:
-        child = bench_child.run([*OSDKC, "run", "--impl", "all", "--no-progress", "--report-dir", tmp], timeout)
+        child = bench_child.run([*OSDKC, "run", "--impl", "all", "--quiet", "--report-dir", tmp], timeout)
         try:
             status = json.loads((Path(tmp) / "conformance.json").read_text())
         except (OSError, ValueError):
@@ -126,7 +126,7 @@ def _device_fuzz_at(baud: int, cases: int, seed: int, profile: str, timeout: flo
     if head:
         verdict, n = head[1], int(head[2])
         out.update({"verdict": verdict, "cases": n, "seconds": float(head[3]), "cases_per_s": float(head[4]),
-                    "findings": int(verdict.split()[0]) if verdict[0].isdigit() else 0})
+                    "findings": int(found[1]) if (found := re.match(r"FOUND (\d+)", verdict)) else 0})
         per_case = float(head[6])   # everything the fuzzer sent while fuzzing, over the cases
         if per_case > 0 and n:
             out["bytes_per_case"] = round(per_case, 1)

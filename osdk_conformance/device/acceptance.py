@@ -6,13 +6,16 @@
 
 Passive checks listen to the broadcast; `--active` adds the command
 exchange (version, activation, frequencies, control authority) and, only
-with `--allow-motion`, movement control. Every received and sent byte is
+with `--allow-motion`, movement control (asked for at the terminal first:
+`confirm_motion`; `--yes` for scripts). Every received and sent byte is
 recorded in a pcapng capture (core/capture.py) that `--replay` checks offline.
 Each check is a named Result (category = check group, id = check name), so
 the reports are those of `osdkc run`. docs/ACCEPTANCE.md lists every check.
 
 Exit status: EXIT_STATUS below (also the --help epilog and docs/ACCEPTANCE.md).
-An active run always ends through ActiveRun.clean_up (active.py).
+An active run always ends through ActiveRun.clean_up (active.py). A run
+PASSES, FAILS or was INTERRUPTED (device/verdict.py): the same word at the
+terminal, in the HTML banner and in the JUnit property `verdict`.
 """
 from __future__ import annotations
 
@@ -33,17 +36,20 @@ from osdk_conformance.device.checks import Options, passive_results
 from osdk_conformance.device.hostload import HostClock
 from osdk_conformance.device.plots import checks_html, plots_html
 from osdk_conformance.device.port import Port
+from osdk_conformance.device.verdict import acceptance_word, counts
 from osdk_conformance.harness.report import ERROR, PASS, SKIP, Result, conforms, summary_table, write_html, write_junit
 
-EXIT_STATUS = ("exit status: 0 every check passed, 1 a check failed or errored, 2 usage or port error, "
-               "130 interrupted by SIGINT, 143 by SIGTERM (an interrupted run releases control, restores the "
-               "rates it changed and still writes its reports; a second SIGINT cuts that clean-up short)")
+EXIT_STATUS = ("exit status: 0 every check passed (PASS), 1 a check failed or errored (FAIL), 2 usage or port "
+               "error, or movement control not confirmed, 130 interrupted by SIGINT (also at the --allow-motion "
+               "question), 143 by SIGTERM (INTERRUPTED: an interrupted run releases control, restores the rates "
+               "it changed and still writes its reports; a second SIGINT cuts that clean-up short)")
 
 MOTION_WARNING = """\
 !!! WARNING: --allow-motion sends MOVEMENT CONTROL commands. On a real flight
 !!! controller this MOVES THE AIRCRAFT (attitude, velocity, position and height
 !!! changes of several metres). Remove the propellers or use the DJI simulator,
 !!! keep the RC in hand and be ready to take over."""
+ANSWERS_YES = ("yes", "y")
 
 
 # --------------------------------------------------------------------------
@@ -58,7 +64,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--profile", required=True, choices=profiles, help="broadcast wire profile of the flight controller")
     ap.add_argument("--duration", type=positive_float, default=10.0, metavar="S", help="seconds of passive listening (default 10)")
     ap.add_argument("--active", action="store_true", help="also send commands: version, activation, frequency, control")
-    ap.add_argument("--allow-motion", action="store_true", help="with --active: send movement control (MOVES THE AIRCRAFT)")
+    ap.add_argument("--allow-motion", action="store_true",
+                    help="with --active: send movement control (MOVES THE AIRCRAFT); asks for confirmation first")
+    ap.add_argument("--yes", action="store_true",
+                    help="with --allow-motion: do not ask (for scripts; needed when standard input is not a terminal)")
     ap.add_argument("--app-id", type=uint32, help="app id for activation (with --active)")
     ap.add_argument("--key-env", metavar="VAR", help="environment variable holding the app key (64 hex characters)")
     ap.add_argument("--encrypt", action="store_true", help="AES-256 encrypt the commands sent (needs --key-env)")
@@ -107,6 +116,51 @@ def _options(args) -> Options:
                    expect_rates=rates or None)
 
 
+def motion_plan(seconds: float) -> str:
+    """What `movement_check` (active.py) commands, and for how long."""
+    steps = ((seconds, "attitude: roll 5 deg, pitch -3 deg, yaw 20 deg from the heading"),
+             (seconds, "velocity: 1 m/s north, 0.5 m/s west, climb 0.3 m/s, yaw at 10 deg/s"),
+             (seconds * 5 / 3, "position: to 2 m north, 1 m east, 1 m higher"),
+             (0.5, "hover: zero velocity"))
+    return (f"movement control, once control authority is obtained, for about {sum(t for t, _ in steps):.1f} s in "
+            f"all (--motion-seconds {seconds:g}):\n" + "\n".join(f"  {t:4.1f} s  {what}" for t, what in steps))
+
+
+def confirm_motion(tool: str, plan: str, yes: bool, stdin=None, stderr=None) -> int | None:
+    """Ask before anything moves: None to go on, else the exit status (2
+    refused or no answer, 130 Ctrl-C). With `yes` nothing is asked; when
+    standard input is not a terminal nobody could answer: a usage error
+    that says to add --yes (a script must not block on a question)."""
+    if yes:
+        return None
+    stdin, stderr = stdin or sys.stdin, stderr or sys.stderr
+    try:
+        interactive = stdin.isatty()
+    except (AttributeError, ValueError, OSError):
+        interactive = False
+    if not interactive:
+        raise UsageError("--allow-motion: standard input is not a terminal, so nobody can confirm that the aircraft "
+                         "may move; add --yes to send movement control without asking (nothing was sent)")
+    stderr.write(f"{tool}: about to send {plan}\n{tool}: type yes to go on (anything else aborts): ")
+    stderr.flush()
+    try:
+        answer = stdin.readline()
+    except KeyboardInterrupt:
+        stderr.write(f"\n{tool}: interrupted at the question: nothing was sent\n")
+        stderr.flush()
+        return 130
+    except OSError:   # the terminal went away
+        answer = ""
+    if answer.strip().lower() in ANSWERS_YES:
+        return None
+    why = f'the answer was "{answer.strip()}", not yes' if answer.strip() else (
+        "no answer (end of input)" if not answer else "the answer was empty, not yes")
+    stderr.write(("" if answer.endswith("\n") else "\n") + f"{tool}: movement control not confirmed ({why}): "
+                 "nothing was sent\n")
+    stderr.flush()
+    return 2
+
+
 def print_results(results: list[Result], quiet: bool, stream=None) -> None:
     stream = stream or sys.stdout
     for r in results:
@@ -116,12 +170,15 @@ def print_results(results: list[Result], quiet: bool, stream=None) -> None:
     stream.write("\n" + summary_table(results) + "\n")
 
 
-def write_reports(args, results: list[Result], an, meta: dict) -> None:
+def write_reports(args, results: list[Result], an, meta: dict, verdict: tuple[str, bool]) -> None:
+    """JUnit and HTML, both with the terminal's verdict line (`verdict`: it
+    and whether it is good): the property `verdict` and the banner."""
+    meta = {"verdict": verdict[0], **meta}
     if args.junit:
-        write_junit(args.junit, results, "osdkc device", {k: str(v) for k, v in meta.items()})
+        write_junit(args.junit, results, "osdkc device", meta)
     if args.html:
-        write_html(args.html, results, f"OPEN protocol acceptance: {meta.get('profile')}", meta,
-                   extra_html=checks_html(results) + plots_html(an))
+        write_html(args.html, results, f"OPEN protocol acceptance run: {meta.get('profile')}", meta,
+                   extra_html=checks_html(results) + plots_html(an), verdict=verdict)
 
 
 def run_device(args: argparse.Namespace) -> int:
@@ -135,6 +192,9 @@ def run_device(args: argparse.Namespace) -> int:
 
     if args.allow_motion:
         print(MOTION_WARNING, file=sys.stderr, flush=True)
+        refused = confirm_motion("osdkc device", motion_plan(args.motion_seconds), args.yes)
+        if refused is not None:
+            return refused
     port = Port(args.port, args.baud, an)
     port.open(start=False)   # before the capture: a port that cannot be opened leaves no file behind
     interrupts = Interrupts()
@@ -168,11 +228,13 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
     results: list[Result] = [Result("link", "link.open", PASS, f"opened {args.port} at {args.baud} baud")]
     run: ActiveRun | None = None
     host = HostClock()
+    started = time.monotonic()   # from the first byte read on: the run's actual duration
     with to_the_end(interrupts, port, an, cap) as ending:
         if cap:
             print(f"osdkc device: capturing to {cap.path}", file=sys.stderr, flush=True)
         port.start(cap)
-        end = time.monotonic() + args.duration
+        started = time.monotonic()
+        end = started + args.duration
         while time.monotonic() < end:
             time.sleep(min(0.1, max(0.0, end - time.monotonic())))
         if args.active and port.ser is None:
@@ -182,6 +244,7 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
                             args.allow_motion, args.active_window, args.motion_seconds, interrupts)
             run.run()
     error = ending.error
+    ran_s = time.monotonic() - started
     opts.host = host.load()
     with an.lock:
         results += passive_results(an, opts, port.state)
@@ -201,17 +264,21 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
         results.append(Result("run", "run.complete", ERROR, f"the run stopped on an internal error during phase "
                               f"{phase}: {error}; clean-up: {cleanup}", {"phase": phase, "clean-up": cleanup},
                               kind="exception"))
-    meta = {"profile": args.profile, "port": args.port, "baud": args.baud, "duration s": args.duration,
+    ok = conforms(results)
+    word = acceptance_word(ok, signame)
+    how = f" by {signame} during phase {phase} after {ran_s:.1f} s, clean-up {cleanup}" if signame else ""
+    line = f"{word}{how}: {counts(results)}"
+    meta = {"profile": args.profile, "port": args.port, "baud": args.baud,
+            "duration": f"{ran_s:.1f} s" + (f" (interrupted; {args.duration:g} s of listening planned)" if signame
+                                            else f" ({args.duration:g} s of listening)"),
             "capture": str(cap.path) if cap else "none", "active": args.active,
+            "movement control": "allowed" if args.allow_motion else "not allowed",
             "interrupted": f"{signame} during phase {phase}" if signame else "no", "clean-up": cleanup}
     print_results(results, args.quiet)
-    write_reports(args, results, an, meta)
-    ok = conforms(results)
+    write_reports(args, results, an, meta, (line, ok and not signame))
+    print(f"\nosdkc device: {line}; {'' if signame else f'{ran_s:.1f} s, '}{args.profile} on {args.port}")
     if signame:
-        print(f"\nosdkc device: INTERRUPTED by {signame} during phase {phase}, clean-up {cleanup} "
-              f"({args.profile} on {args.port})")
         return EXIT_BY_SIGNAL.get(signame, 130)
-    print(f"\nosdkc device: {'PASS' if ok else 'FAIL'} ({args.profile} on {args.port})")
     return 0 if ok else 1
 
 
@@ -231,8 +298,9 @@ def _replay(args, an, opts: Options) -> int:
     if capf.partial_tail:
         print(f"osdkc device: {args.replay} ends in an incomplete block ({capf.partial_tail} bytes; "
               "the recording process was killed): replaying the complete blocks", file=sys.stderr)
-    print_results(results, args.quiet)
-    write_reports(args, results, an, meta)
     ok = conforms(results)
-    print(f"\nosdkc device: {'PASS' if ok else 'FAIL'} ({args.profile}, replay of {args.replay})")
+    line = f"{acceptance_word(ok, None)}: {counts(results)}"
+    print_results(results, args.quiet)
+    write_reports(args, results, an, meta, (line, ok))
+    print(f"\nosdkc device: {line}; {args.profile}, replay of {args.replay}")
     return 0 if ok else 1

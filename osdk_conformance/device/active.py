@@ -52,6 +52,8 @@ CLEANUP_ACK_TIMEOUT, CLEANUP_TRIES = 0.5, 2   # after an interruption: at most ~
 # first command and whenever a command finds the port down (a cable glitch
 # must not leave the aircraft under onboard control)
 CLEANUP_PORT_WAIT = 4.0
+# why a check was skipped, in the few words of the summary line (device/verdict.py)
+NO_APP_ID, NOTHING_TO_UNDO = "no --app-id", "nothing to undo"
 
 
 class RunInterrupted(KeyboardInterrupt):
@@ -313,14 +315,17 @@ class ActiveRun:
         self.frequency(activated)
         self.enter("obtain")
         if not activated and self.app_id is None:
-            self.res("active.control_obtain", SKIP, "control authority needs an activated app: no --app-id given")
+            self.res("active.control_obtain", SKIP, "control authority needs an activated app: no --app-id given",
+                     kind=NO_APP_ID)
             obtained = False
         else:
             obtained = self.two_step(1, "active.control_obtain", 3, 2, 2)
         if not self.allow_motion:
-            self.res("active.movement", SKIP, "movement control not tried (needs --allow-motion)")
+            self.res("active.movement", SKIP, "movement control not tried (needs --allow-motion)",
+                     kind="no --allow-motion")
         elif not obtained:
-            self.res("active.movement", SKIP, "control authority not obtained: movement control not tried")
+            self.res("active.movement", SKIP, "control authority not obtained: movement control not tried",
+                     kind="no control authority")
         else:
             movement_check(self)
 
@@ -353,7 +358,7 @@ class ActiveRun:
         if self.app_id is None:
             activated = version_ack is not None and int(version_ack.ack_code) == 0
             self.res("active.activation", SKIP, "no --app-id given: activation not tried"
-                     + ("; the version query says the app is already activated" if activated else ""))
+                     + ("; the version query says the app is already activated" if activated else ""), kind=NO_APP_ID)
             return activated
         ack, info = self.cmd.request(0, 1, {"app_id": self.app_id, "api_level": 2,
                                             "sdk_version": self.an.prof.sdk_version, "bundle_id": bytes(32)})
@@ -385,7 +390,7 @@ class ActiveRun:
             self.changes.frequency_sent = False   # refused, so not applied: nothing to restore
         if int(ack.ack_code) == NOT_ACTIVATED and not activated and self.app_id is None:
             self.res("active.frequency", SKIP, "set frequency needs an activated app on this flight controller: "
-                     "no --app-id given")
+                     "no --app-id given", kind=NO_APP_ID)
             return
         if int(ack.ack_code) != 0:
             self.res("active.frequency", FAIL, f"set frequency refused: {ack_code_text(ack.ack_code)}", kind="refused")
@@ -490,13 +495,15 @@ class ActiveRun:
                 self.two_step(0, "active.control_release", 4, 1, 0, tries, timeout)
                 done.append("release control")
             elif "active.control_release" not in self._ids():
-                self.res("active.control_release", SKIP, "control was not requested: nothing to release")
+                self.res("active.control_release", SKIP, "control was not requested: nothing to release",
+                         kind=NOTHING_TO_UNDO)
             self.enter("restore")
             if self.changes.frequency_sent:
                 self.restore_frequencies(tries, timeout)
                 done.append("restore the broadcast frequencies")
             else:
-                self.res("active.frequency_restore", SKIP, "the frequencies were not changed: nothing to restore")
+                self.res("active.frequency_restore", SKIP, "the frequencies were not changed: nothing to restore",
+                         kind=NOTHING_TO_UNDO)
         except CleanupCut as e:
             left = [s for s in steps if s not in done]
             self.cleanup_cut = f"clean-up cut short by a second {e.signame}: not done: {', '.join(left) or 'none'}"
@@ -522,7 +529,8 @@ class ActiveRun:
 def not_reached(results: list[Result], why: str) -> list[Result]:
     """A SKIP for every active check missing from `results` (the run ended before it)."""
     have = {r.id for r in results}
-    return [Result("active", cid, SKIP, f"not reached: {why}") for cid in ACTIVE_CHECKS if cid not in have]
+    return [Result("active", cid, SKIP, f"not reached: {why}", kind="not reached") for cid in ACTIVE_CHECKS
+            if cid not in have]
 
 
 def rate_codes(prof, rates: dict[str, int]) -> list[int]:

@@ -9,13 +9,12 @@ from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
 from typing import Any
 
-from osdk_construct.payload import osdk_payload
-
-from osdk_conformance.core.rules import profile as load_profile, profile_names
+from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.device.analysis import percentile
 from osdk_conformance.device.hostload import HostLoad
 from osdk_conformance.device.port import LinkState
 from osdk_conformance.harness.report import FAIL, PASS, SKIP, Result
+from osdk_conformance.reference.decode import profiles_decoding
 
 @dataclass
 class Options:
@@ -182,20 +181,7 @@ def profile_check(an, opts: Options) -> Result:
             want = None
         sizes.append(f"flags 0x{flags:04x}: {len(v)} bytes, {opts.profile} expects "
                      + (f"{want}" if want is not None else "no such flag bits"))
-    fits = []
-    for other in profile_names():
-        if other == opts.profile:
-            continue
-        c = osdk_payload(2, 0, False, other)
-        ok = 0
-        for v in bad:
-            try:
-                c.parse(v)
-                ok += 1
-            except Exception:
-                pass
-        if ok == len(bad):
-            fits.append(other)
+    fits = profiles_decoding(bad, opts.profile)
     details = {"payload sizes": sizes, "broadcasts that decode": nb, "broadcasts that do not": len(bad)}
     if fits:
         return Result("decode", "decode.profile", FAIL,

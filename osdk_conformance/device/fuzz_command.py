@@ -7,6 +7,12 @@ check after every case (device/fuzz_session.py).
     osdkc fuzz --port /dev/ttyUSB0 --profile a3-fw3.1 --replay findings/.../finding-1-....repro.json
 
 docs/DEVICE-FUZZING.md says what is sent, what is checked and what is safe.
+A session FOUND n findings or found NOTHING (NOTHING FOUND), or was
+INTERRUPTED; a replay REPRODUCED its finding or did not: the same word at
+the terminal, in the HTML banner and in the JUnit property `verdict`, with
+how many checks ran, passed, failed and were skipped (device/verdict.py).
+`--allow-motion` asks for confirmation at a terminal first (`--yes` for
+scripts), as `osdkc device` does.
 """
 from __future__ import annotations
 
@@ -25,7 +31,7 @@ from osdk_conformance.core.capture import CaptureWriter
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.core.options import baud_rate, fraction, positive_float, positive_int, uint32
 from osdk_conformance.core.wire import key_option
-from osdk_conformance.device.acceptance import MOTION_WARNING, expect_rates
+from osdk_conformance.device.acceptance import MOTION_WARNING, confirm_motion, expect_rates
 from osdk_conformance.device.active import EXIT_BY_SIGNAL, Commander, Interrupts, to_the_end
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS, FuzzCase, safe
@@ -34,14 +40,16 @@ from osdk_conformance.device.fuzz_session import FuzzSession, SessionOptions, Se
 from osdk_conformance.device.liveness import LivenessOptions
 from osdk_conformance.device.plots import checks_html
 from osdk_conformance.device.port import Port
+from osdk_conformance.device.verdict import FOUND, INTERRUPTED, NOTHING_FOUND, counts
 from osdk_conformance.harness import fuzz as differential
 from osdk_conformance.harness.report import Result, conforms, write_html, write_junit
 
 DIFFERENTIAL_ONLY = ("testee", "impl", "max_examples", "out", "op", "timeout")
-EXIT_STATUS = ("exit status with --port: 0 no finding, 1 a finding (or the device was not live before the first "
-               "case, or no case was sent; with --replay: the finding reproduced, or the reproducer was not sent), "
-               "2 usage or port error, 130 interrupted by SIGINT, 143 by SIGTERM (an interrupted session "
-               "releases control, restores the rates it changed and still writes its reports)")
+EXIT_STATUS = ("exit status with --port: 0 NOTHING FOUND, 1 FOUND n (or the device was not live before the first "
+               "case, or no case was sent; with --replay: the finding REPRODUCED, or the reproducer was not sent), "
+               "2 usage or port error, or movement control not confirmed, 130 interrupted by SIGINT (also at the "
+               "--allow-motion question), 143 by SIGTERM (INTERRUPTED: an interrupted session releases control, "
+               "restores the rates it changed and still writes its reports)")
 
 
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
@@ -53,7 +61,10 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     d.add_argument("--kind", action="append", choices=tuple(KINDS), metavar="KIND",
                    help=f"only cases of this kind (repeatable; {', '.join(KINDS)})")
     d.add_argument("--allow-motion", action="store_true",
-                   help="obtain control and send movement control with zero setpoints in a velocity mode")
+                   help="obtain control and send movement control with zero setpoints in a velocity mode; asks for "
+                        "confirmation first")
+    d.add_argument("--yes", action="store_true",
+                   help="with --allow-motion: do not ask (for scripts; needed when standard input is not a terminal)")
     d.add_argument("--app-id", type=uint32, help="with --allow-motion: activate this app id before obtaining control")
     d.add_argument("--key-env", metavar="VAR",
                    help="environment variable holding the app key (64 hex characters): reads an encrypted broadcast")
@@ -118,6 +129,9 @@ def run_fuzz(args: argparse.Namespace) -> int:
     if args.allow_motion:
         print(MOTION_WARNING.replace("MOVEMENT CONTROL commands", "MOVEMENT CONTROL commands (zero setpoints)"),
               file=sys.stderr, flush=True)
+        refused = confirm_motion("osdkc fuzz", _motion_plan(args, sopts, replay), args.yes)
+        if refused is not None:
+            return refused
     port = Port(args.port, args.baud, an)
     port.open(start=False)   # a port that cannot be opened leaves no file behind
     interrupts = Interrupts("osdkc fuzz")
@@ -138,6 +152,20 @@ def run_fuzz(args: argparse.Namespace) -> int:
         return _session(args, profile, seed, an, port, cap, sopts, findings_dir, interrupts, replay, key)
     finally:
         interrupts.uninstall()
+
+
+def _motion_plan(args, sopts: SessionOptions, replay: list[FuzzCase] | None) -> str:
+    """What --allow-motion makes the session send, and for how long."""
+    control = ("control authority obtained (after activating app id " + str(args.app_id) + ")"
+               if args.app_id is not None else "control authority obtained")
+    if replay is not None:
+        return (f"the {len(replay)} case(s) of {args.replay} with {control}, and released once they are checked")
+    budget = " or ".join(filter(None, [f"{sopts.seconds:g} s" if sopts.seconds else "",
+                                       f"{sopts.max_cases} cases" if sopts.max_cases else ""]))
+    cases = ("" if sopts.kinds is not None and not set(sopts.kinds) & MOTION_KINDS else
+             " and movement control with zero setpoints (velocity modes 0x48 to 0x4F) among the cases")
+    return (f"fuzz cases with {control} for the whole session{cases}: up to {budget}"
+            + (", whichever ends first" if " or " in budget else "") + ", then control released")
 
 
 def _restart_command(cmd: str | None) -> Callable[[], str | None] | None:
@@ -196,7 +224,7 @@ def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions
             "bytes per case": round(out.bytes_sent / sent, 1) if sent else 0,
             "motion": out.motion, "restart": args.restart_cmd or "none (waits for recovery)"}
     if replay is None:
-        results = results_of(out, write_findings(out, findings_dir, profile, seed, meta))
+        results = results_of(out, write_findings(out, findings_dir, profile, seed, meta), sopts.kinds)
     else:
         meta.pop("seed")
         results = _replay_results(out, args.replay)
@@ -207,36 +235,47 @@ def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions
         cut = session.cleanup.cleanup_cut or "complete"
         results.append(Result("run", "run.complete", "error", f"{why}; clean-up: {cut}", kind="interrupted"))
     elif out.stopped and replay is None:
-        results.append(Result("run", "run.complete", "skip", f"stopped before the budget: {out.stopped}"))
+        results.append(Result("run", "run.complete", "skip", f"stopped before the budget: {out.stopped}",
+                              kind="stopped before the budget"))
     _print(results, args.quiet)
+    line, status = _verdict(args, results, out, sent, seed, profile, findings_dir, replay, signame, error)
     title = f"Device fuzzing: {profile} on {args.port}"
+    meta = {"verdict": line, **meta}
     if args.junit:
-        write_junit(args.junit, results, "osdkc fuzz --port", {k: str(v) for k, v in meta.items()})
+        write_junit(args.junit, results, "osdkc fuzz --port", meta)
     if args.html:
-        write_html(args.html, results, title, {k: str(v) for k, v in meta.items()},
+        write_html(args.html, results, title, meta, verdict=(line, status == 0),
                    extra_html=checks_html(results) + timeline_html(session.live, out))
     if args.allow_motion:
         print(f"osdkc fuzz: movement control {out.motion}", file=sys.stderr, flush=True)
-    total = sent
+    print(f"\nosdkc fuzz: {line}")
+    return status
+
+
+def _verdict(args, results: list[Result], out: SessionOutcome, total: int, seed: int, profile: str,
+             findings_dir: Path, replay: list[FuzzCase] | None, signame: str | None, error: str) -> tuple[str, int]:
+    """The summary line (also the HTML banner and the JUnit property) and the exit status."""
+    checks = counts(results)
+    interrupted = f"{INTERRUPTED} by {signame}" if signame else ""
     if replay is not None:
         status = 1 if out.findings or out.start_problem or out.stopped or signame or error else 0
-        word = ("REPRODUCED" if out.findings else "INTERRUPTED" if signame else "NOT RUN" if not total
-                else "not reproduced")
-        print(f"\nosdkc fuzz: {word}: {len(replay)} case(s) of {args.replay}, {profile} on {args.port}")
-        return EXIT_BY_SIGNAL.get(signame, 130) if signame else status
+        word = ("REPRODUCED" if out.findings else interrupted or ("NOT RUN" if not total else "STOPPED" if error
+                                                                  else "NOT REPRODUCED"))
+        return (f"{word}: {len(replay)} case(s) of {args.replay}, {profile} on {args.port}; {checks}",
+                EXIT_BY_SIGNAL.get(signame, 130) if signame else status)
     rate = total / out.case_seconds if out.case_seconds else 0.0
     per_case = f", {out.bytes_sent / total:.1f} bytes/case" if total else ""
     tail = (f"{total} cases in {out.seconds:.1f} s ({rate:.1f} cases/s at {args.baud} baud{per_case}), "
-            f"seed {seed}, {profile} on {args.port}")
+            f"seed {seed}, {profile} on {args.port}; {checks}")
     if signame:
-        print(f"\nosdkc fuzz: INTERRUPTED by {signame}: {tail}")
-        return EXIT_BY_SIGNAL.get(signame, 130)
+        return f"{interrupted}: {tail}", EXIT_BY_SIGNAL.get(signame, 130)
     if out.findings:
-        print(f"\nosdkc fuzz: {len(out.findings)} FINDING(S): {tail}; reproducers in {findings_dir}")
-        return 1
-    ok = conforms(results) and total > 0   # no case sent is no verdict
-    print(f"\nosdkc fuzz: {'NO FINDING' if ok else 'FAIL' if total else 'NOTHING FUZZED'}: {tail}")
-    return 0 if ok else 1
+        return f"{FOUND} {len(out.findings)}: {tail}; reproducers in {findings_dir}", 1
+    if not total:   # no case sent is no verdict
+        return f"NOTHING FUZZED: {tail}", 1
+    if not conforms(results):   # no finding, but the session did not end well
+        return f"{'STOPPED' if error or out.port_lost else 'CLEAN-UP FAILED'}: {tail}", 1
+    return f"{NOTHING_FOUND}: {tail}", 0
 
 
 def _replay_results(out: SessionOutcome, path: str) -> list[Result]:

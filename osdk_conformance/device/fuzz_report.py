@@ -24,7 +24,9 @@ from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
 REPRO_FORMAT = "osdkc-device-fuzz-reproducer/1"
 
 
-def results_of(out: SessionOutcome, repro_paths: dict[int, Path]) -> list[Result]:
+def results_of(out: SessionOutcome, repro_paths: dict[int, Path], kinds: tuple[str, ...] | None = None) -> list[Result]:
+    """The session's results; `kinds` are the --kind options (None: every kind), which tell a kind left out
+    from one the budget did not reach. A SKIP's `kind` says why in a few words (the summary line's)."""
     res: list[Result] = []
     if out.start_problem:
         res.append(Result("fuzz", "fuzz.start", ERROR, f"the device was not live before the first case: "
@@ -47,11 +49,16 @@ def results_of(out: SessionOutcome, repro_paths: dict[int, Path]) -> list[Result
             res.append(Result("cases", cid, PASS, f"{sent} sent and checked, no finding{held}",
                               {"sent": sent, "withheld": withheld, "what": what}))
         else:
-            why = (f"movement control {out.motion}" if kind in MOTION_KINDS
-                   else "none sent (the budget ended first, or --kind left it out)")
             if withheld:
-                why = f"every case of this kind was withheld for safety ({withheld})"
-            res.append(Result("cases", cid, SKIP, why, {"withheld": withheld, "what": what}))
+                why, short = f"every case of this kind was withheld for safety ({withheld})", "withheld for safety"
+            elif kind in MOTION_KINDS and (kinds is None or kind in kinds):
+                why = f"movement control {out.motion}"
+                short = "no --allow-motion" if out.motion.startswith("not allowed") else "no control authority"
+            elif kinds is not None and kind not in kinds:
+                why, short = "not sent: --kind left it out", "left out by --kind"
+            else:
+                why, short = "none sent: the budget ended first", "budget ended first"
+            res.append(Result("cases", cid, SKIP, why, {"withheld": withheld, "what": what}, kind=short))
     for f in out.findings:
         res.append(finding_result(f, repro_paths.get(f.number)))
     if out.checks:

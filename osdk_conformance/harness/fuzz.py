@@ -64,6 +64,7 @@ import osdk_construct
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
+from osdk_conformance.core.paths import CACHE
 from osdk_conformance.core.rules import default_rules, input_ranges, profile as rules_profile
 from osdk_conformance.harness.runner import ALL, BUNDLED_IMPLS, impl_argv, parse_capabilities
 from osdk_conformance.harness.spec_rules import rule_flag
@@ -97,6 +98,15 @@ _OP_RULES = {
 
 
 # ============================================================== inputs
+
+
+def _hypothesis_home() -> None:
+    """Hypothesis keeps caches of its own (the constants it collects from the
+    code under test) in ./.hypothesis unless told otherwise: they go to the
+    kit's cache folder, not into the user's working directory."""
+    from hypothesis.configuration import set_hypothesis_home_dir
+
+    set_hypothesis_home_dir(str(CACHE / "hypothesis"))
 
 
 def _strategies(profiles: Sequence[str], ops: Sequence[str]):
@@ -376,6 +386,8 @@ def drawn_inputs(op: str, profile: str, count: int, seed: int) -> list[dict]:
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hypothesis_seed
 
+    _hypothesis_home()
+
     drawn: list[dict] = []
 
     def keep(example) -> None:
@@ -528,6 +540,8 @@ def fuzz(fuzzees: Sequence[Fuzzee], *, ops: Sequence[str] | None = None, profile
     """Fuzz the started testees against each other (see the module doc)."""
     from hypothesis import HealthCheck, Phase, Verbosity, given, settings
     from hypothesis import seed as hypothesis_seed
+
+    _hypothesis_home()
 
     # An operation is fuzzed among the testees that claim it, when two or more
     # do: one that only decodes (accel) must not take the others' control

@@ -17,6 +17,10 @@ Statuses:
 JSON value (shown as JSON). The JUnit and HTML writers put every detail of
 every non-passing case in the report; nothing is interpreted except the
 label `flags` (a list of strings), which is shown as tags.
+
+No Python repr reaches a report: a yes/no value (a detail, a metadata
+entry, a JUnit property) is written "yes" or "no", and a metadata entry or
+property whose value is None is left out (`value_text`).
 """
 from __future__ import annotations
 
@@ -41,7 +45,7 @@ class Result:
     status: str
     message: str = ""
     details: dict[str, Any] = field(default_factory=dict)
-    kind: str = ""  # what sort of failure: e.g. "mismatch", "testee_timeout"
+    kind: str = ""  # what sort of failure: e.g. "mismatch", "testee_timeout"; for a skip, why (in a few words)
     seconds: float = 0.0
 
     def __post_init__(self) -> None:
@@ -60,10 +64,27 @@ def counts_by_category(results: Iterable[Result]) -> dict[str, Counter]:
     return dict(sorted(out.items()))
 
 
+def value_text(value: Any) -> str | None:
+    """A metadata value or JUnit property as report text: yes/no for a
+    boolean, None (left out) for None, never a Python repr."""
+    if value is None:
+        return None
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    return str(value)
+
+
 def detail_text(value: Any) -> str:
     if isinstance(value, str):
         return value
+    if value is None or isinstance(value, bool):
+        return value_text(value) or "none"
     return json.dumps(value, indent=2, ensure_ascii=False, allow_nan=True, default=str)
+
+
+def _words(meta: dict[str, Any] | None) -> dict[str, str]:
+    """`meta` with every value as report text, None values left out."""
+    return {str(k): t for k, v in (meta or {}).items() if (t := value_text(v)) is not None}
 
 
 # ---- terminal -----------------------------------------------------------------
@@ -103,8 +124,10 @@ def _xml_safe(text: str) -> str:
                    for ch in text)
 
 
-def junit_xml(results: Sequence[Result], suite_name: str, properties: dict[str, str] | None = None) -> bytes:
-    """JUnit XML: one <testsuite> per category, one <testcase> per result."""
+def junit_xml(results: Sequence[Result], suite_name: str, properties: dict[str, Any] | None = None) -> bytes:
+    """JUnit XML: one <testsuite> per category, one <testcase> per result
+    (`properties` as `value_text` writes them)."""
+    properties = _words(properties)
     root = ET.Element("testsuites", name=_xml_safe(suite_name))
     tot = Counter()
     by_cat: dict[str, list[Result]] = {}
@@ -121,7 +144,7 @@ def junit_xml(results: Sequence[Result], suite_name: str, properties: dict[str, 
         if properties:
             props = ET.SubElement(suite, "properties")
             for k, v in properties.items():
-                ET.SubElement(props, "property", name=_xml_safe(k), value=_xml_safe(str(v)))
+                ET.SubElement(props, "property", name=_xml_safe(k), value=_xml_safe(v))
         for r in rs:
             tc = ET.SubElement(suite, "testcase", classname=_xml_safe(cat), name=_xml_safe(r.id),
                                time=f"{r.seconds:.3f}")
@@ -172,7 +195,7 @@ def _esc(value: Any) -> str:
     return html.escape(str(value), quote=True)
 
 
-def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
+def html_report(results: Sequence[Result], title: str, meta: dict[str, Any] | None = None,
                 appendix: dict[str, str] | None = None, max_cases: int = 2000,
                 extra_html: str | None = None, verdict: tuple[str, bool] | None = None) -> str:
     """A self-contained HTML page (no external assets, no scripts). Every
@@ -191,7 +214,7 @@ def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | No
            f"<title>{_esc(title)}</title><style>{_CSS}</style></head><body>",
            f"<h1>{_esc(title)}</h1>",
            f'<p class="verdict {"ok" if ok else "no"}">{_esc(line)}</p>']
-    meta = dict(meta or {})
+    meta = _words(meta)
     meta.setdefault("generated", time.strftime("%Y-%m-%d %H:%M:%S %z"))
     out.append('<table class="meta"><tbody>')
     out += [f"<tr><th>{_esc(k)}</th><td>{_esc(v)}</td></tr>" for k, v in meta.items()]
@@ -218,7 +241,7 @@ def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | No
     shown = sorted(not_passed, key=lambda r: order[r.status])[:max_cases]
     out.append(f"<h2>Cases that did not pass ({len(not_passed)})</h2>")
     if not shown:
-        out.append("<p>None.</p>")
+        out.append("<p>Not one: every case passed or was skipped.</p>")
     elif len(shown) < len(not_passed):
         out.append(f"<p>The first {len(shown)} are listed here; the JUnit report has all of them.</p>")
     cats = sorted({r.category for r in shown})
@@ -249,11 +272,11 @@ def html_report(results: Sequence[Result], title: str, meta: dict[str, str] | No
 
 
 def write_junit(path: str | Path, results: Sequence[Result], suite_name: str,
-                properties: dict[str, str] | None = None) -> None:
+                properties: dict[str, Any] | None = None) -> None:
     Path(path).write_bytes(junit_xml(results, suite_name, properties))
 
 
-def write_html(path: str | Path, results: Sequence[Result], title: str, meta: dict[str, str] | None = None,
+def write_html(path: str | Path, results: Sequence[Result], title: str, meta: dict[str, Any] | None = None,
                appendix: dict[str, str] | None = None, extra_html: str | None = None,
                verdict: tuple[str, bool] | None = None) -> None:
     Path(path).write_text(html_report(results, title, meta, appendix, extra_html=extra_html, verdict=verdict),

@@ -19,6 +19,7 @@ import json
 from typing import Any
 
 from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.schema_check import SchemaCheck
 
 SCHEMA_DIR = ROOT / "conformance" / "schemas"
 BASE_URI = "https://osdk-conformance.local/schemas/"
@@ -70,35 +71,31 @@ SCHEMA_VIOLATION = "schema_violation"
 
 
 @functools.cache
-def _registry():
-    from referencing import Registry, Resource
-
+def _resources() -> tuple[tuple[str, dict], ...]:
+    """(uri, contents) of every schema of conformance/schemas/."""
     resources = []
     for path in sorted(SCHEMA_DIR.glob("*.schema.json")):
         doc = json.loads(path.read_text(encoding="utf-8"))
-        resources.append((doc["$id"], Resource.from_contents(doc)))
+        resources.append((doc["$id"], doc))
     if not resources:
         raise FileNotFoundError(f"no schemas in {SCHEMA_DIR} (run tools/gen_schemas.py)")
-    return Registry().with_resources(resources)
+    return tuple(resources)
 
 
 @functools.cache
-def validator(op: str, profile: str | None, part: str = "response"):
+def validator(op: str, profile: str | None, part: str = "response") -> SchemaCheck | None:
     """A Draft 2020-12 validator of `part` ("response" or "request") of
     `op`, for `profile` where the operation's result depends on it; None
     for an operation without a schema."""
-    from jsonschema import Draft202012Validator
-
     uri = f"{BASE_URI}{op}.schema.json"
-    try:
-        doc = _registry().contents(uri)
-    except LookupError:
+    doc = dict(_resources()).get(uri)
+    if doc is None:
         return None
     defs = doc["$defs"]
     name = f"{part}.{profile}" if f"{part}.{profile}" in defs else part
     if name not in defs:
         return None
-    return Draft202012Validator({"$ref": f"{uri}#/$defs/{name}"}, registry=_registry())
+    return SchemaCheck({"$ref": f"{uri}#/$defs/{name}"}, _resources())
 
 
 def violation(op: str, profile: str | None, response: Any, part: str = "response") -> str | None:

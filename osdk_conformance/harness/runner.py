@@ -36,6 +36,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import signal
 import sys
 import threading
@@ -737,7 +738,10 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     p.add_argument("--filter", metavar="SUBSTRING", help="only cases whose id contains SUBSTRING")
     p.add_argument("--vectors", action="append", metavar="FILE",
                    help="vector file(s) to use instead of vectors/*.json (repeatable)")
-    p.add_argument("--no-progress", action="store_true", help="no progress output on stderr")
+    p.add_argument("-q", "--quiet", dest="no_progress", action="store_true",
+                   help="no progress output on stderr")
+    # the former spelling, still accepted; -q/--quiet is the one every command shares
+    p.add_argument("--no-progress", dest="no_progress", action="store_true", help=argparse.SUPPRESS)
     p.add_argument("--summary-json", metavar="FILE", help="write the run's counts and verdict as JSON")
     p.add_argument("--report-dir", metavar="DIR", default=str(REPORTS),
                    help="with --impl all: where each implementation's JUnit, HTML, log and summary go, "
@@ -779,6 +783,52 @@ def status_table(summaries: list[dict]) -> str:
     return "\n".join(lines)
 
 
+_PROGRESS_LINE = re.compile(r"osdkc run: ([\d,]+)/([\d,]+) cases")
+
+
+class _Heartbeat:
+    """What `run --impl all` is doing: the implementations done, and the cases
+    done by each running one (the last progress line in its log). A line
+    rewritten on a terminal; otherwise a line when one finishes and at least
+    every 10 s."""
+
+    EVERY = 10.0
+
+    def __init__(self, out_dir: Path, impls: Sequence[str], stream: TextIO | None) -> None:
+        self.out_dir, self.impls, self.stream = out_dir, impls, stream
+        self.tty = bool(stream is not None and stream.isatty())
+        self.start = self.last = time.monotonic()
+        self.done_before = 0
+        self.final = False
+
+    def _cases(self, impl: str) -> str:
+        try:
+            text = (self.out_dir / f"{impl}.log").read_text(errors="replace")
+        except OSError:
+            return "starting"
+        found = _PROGRESS_LINE.findall(text)
+        return f"{found[-1][0]}/{found[-1][1]}" if found else "starting"
+
+    def show(self, done: dict[str, bool], final: bool = False) -> None:
+        self.final = self.final or final
+        if self.stream is None:
+            return
+        now = time.monotonic()
+        finished = sum(done.values())
+        if not (final or self.tty and now - self.last >= 0.5 or now - self.last >= self.EVERY
+                or finished != self.done_before):
+            return
+        self.last, self.done_before = now, finished
+        running = ", ".join(f"{impl} {self._cases(impl)}" for impl in self.impls if not done[impl])
+        line = (f"osdkc run: {finished}/{len(self.impls)} implementations done, {now - self.start:.0f} s"
+                + (f"; running: {running}" if running else ""))
+        if self.tty:
+            self.stream.write("\r\x1b[K" + line[:200] + ("\n" if final else ""))
+        else:
+            self.stream.write(line + "\n")
+        self.stream.flush()
+
+
 def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
     """The `chosen` bundled implementations (--impl all: every one), `--jobs` at a time, each in its own
     `osdkc run` process (the runner's judging is CPU-bound Python, so
@@ -797,7 +847,7 @@ def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
     except OSError as e:
         raise UsageError(f"--report-dir {out_dir}: {e.strerror or e}") from None
     import subprocess
-    from concurrent.futures import ThreadPoolExecutor
+    from concurrent.futures import ThreadPoolExecutor, wait
 
     lock = threading.Lock()
     live: dict[str, subprocess.Popen] = {}
@@ -806,7 +856,8 @@ def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
     def one(impl: str) -> dict:
         summary_path = out_dir / f"{impl}.json"
         summary_path.unlink(missing_ok=True)
-        cmd = [sys.executable, "-m", "osdk_conformance.cli", "run", "--impl", impl, "--no-progress",
+        # its progress lines (a tenth of the run each) go to its log, where the heartbeat below reads them
+        cmd = [sys.executable, "-m", "osdk_conformance.cli", "run", "--impl", impl,
                "--junit", str(out_dir / f"{impl}.xml"), "--html", str(out_dir / f"{impl}.html"),
                "--summary-json", str(summary_path), *_forwarded(args)]
         with open(out_dir / f"{impl}.log", "w", encoding="utf-8") as log:
@@ -834,8 +885,9 @@ def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:
         futures = []
         try:
             futures += [pool.submit(one, impl) for impl in impls]
-            for f in futures:
-                f.result()
+            beat = _Heartbeat(out_dir, impls, sys.stderr if not args.no_progress else None)
+            while (pending := wait(futures, timeout=0.5).not_done) or not beat.final:
+                beat.show({impl: f.done() for impl, f in zip(impls, futures)}, final=not pending)
         except Interrupted as i:
             # Each run writes its partial reports and kills its testee on the same signal.
             with lock:

@@ -33,17 +33,18 @@ from __future__ import annotations
 
 import argparse
 import sys
+import threading
 import time
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
 from typing import Any, Iterable, Iterator, Sequence, TextIO
 
-from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positive_float, positive_int
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.harness import mutants
 from osdk_conformance.harness.report import FAIL
-from osdk_conformance.harness.runner import run_cases
+from osdk_conformance.harness.runner import Interrupted, SignalStop, run_cases
 from osdk_conformance.harness.testee import Testee, TesteeStartError
 from osdk_conformance.harness.vectors import compare, load_cases
 
@@ -76,16 +77,20 @@ class _StopAfter:
     takes the next case only afterwards, so the source knows the failure
     count before it hands out the next case."""
 
-    def __init__(self, cases: Sequence[Any], limit: int) -> None:
+    def __init__(self, cases: Sequence[Any], limit: int, stopping: threading.Event | None = None) -> None:
         self.cases = cases
         self.limit = limit
         self.failed = 0
         self.stopped = False
+        self.stopping = stopping
+        self.done = 0
 
     def __iter__(self) -> Iterator[Any]:
         for case in self.cases:
             if self.limit and self.failed >= self.limit:
                 self.stopped = True
+                return
+            if self.stopping is not None and self.stopping.is_set():
                 return
             yield case
 
@@ -94,6 +99,7 @@ class _StopAfter:
 
     def update(self, done: int, failed: int) -> None:
         self.failed = failed
+        self.done = done
 
     def finish(self) -> None:
         pass
@@ -121,28 +127,58 @@ class MutantRun:
         return self.failures > 0 and not self.problem
 
 
+class _Running:
+    """The runs in progress, so that an interrupt can stop them: each run's
+    case source stops handing out cases and its testee is killed."""
+
+    def __init__(self) -> None:
+        self.stopping = threading.Event()
+        self.lock = threading.Lock()
+        self.testees: dict[str, Testee] = {}
+        self.sources: dict[str, _StopAfter] = {}
+
+    def stop(self) -> None:
+        self.stopping.set()
+        with self.lock:
+            testees = list(self.testees.values())
+        for t in testees:
+            t.stop_from_another_thread()
+
+
 def run_mutant(name: str, cases: Sequence[Any], *, max_failures: int = DEFAULT_MAX_FAILURES,
                timeout: float = DEFAULT_TIMEOUT, description: str = "", violates: tuple[str, ...] = (),
-               expect: str = "mismatch") -> MutantRun:
+               expect: str = "mismatch", running: _Running | None = None) -> MutantRun:
     """Replay `cases` (in the given order) against mutant `name` ("none" for
     the unmutated harness) through the runner; stop after `max_failures`
-    failing cases (0: never)."""
+    failing cases (0: never), or when `running` is stopped."""
 
     run = MutantRun(name, description, violates, expect)
     t0 = time.monotonic()
+    running = running or _Running()
+    if running.stopping.is_set():
+        run.problem = "interrupted"
+        return run
     try:
         testee = Testee([sys.executable, str(MUTANT_TESTEE), name], timeout=timeout)
         testee.start()
     except TesteeStartError as e:
         run.problem = str(e)
         return run
-    source = _StopAfter(cases, max_failures)
+    source = _StopAfter(cases, max_failures, running.stopping)
+    with running.lock:
+        running.testees[name], running.sources[name] = testee, source
     try:
         outcome = run_cases(testee, source, compare, source)  # type: ignore[arg-type]
     finally:
         testee.close()
+        with running.lock:
+            running.testees.pop(name, None)
+    if running.stopping.is_set():
+        run.problem = "interrupted"
     run.seconds = time.monotonic() - t0
     results = outcome.results
+    if run.problem:
+        return run
     if outcome.capabilities is None:
         run.problem = outcome.aborted or "no capabilities"
         return run
@@ -168,6 +204,8 @@ class SelftestOutcome:
     baseline: MutantRun | None
     cases: int
     seconds: float
+    interrupted: str | None = None  # the signal that ended the selftest early
+    planned: int = 0                # mutants asked for (runs holds those that finished)
 
     @property
     def killed(self) -> int:
@@ -179,14 +217,48 @@ class SelftestOutcome:
 
     @property
     def ok(self) -> bool:
+        if self.interrupted:
+            return False
         baseline_ok = self.baseline is None or (not self.baseline.failures and not self.baseline.problem)
         return baseline_ok and bool(self.runs) and self.killed == len(self.runs)
 
 
+class _Progress:
+    """Mutants finished and killed so far: a line rewritten on a terminal,
+    otherwise a line whenever 10 s have passed since the last one."""
+
+    EVERY = 10.0
+
+    def __init__(self, total: int, stream: TextIO | None) -> None:
+        self.total, self.stream = total, stream
+        self.tty = bool(stream is not None and stream.isatty())
+        self.start = self.last = time.monotonic()
+
+    def show(self, runs: Sequence[MutantRun], base: _StopAfter | None, final: bool = False) -> None:
+        if self.stream is None:
+            return
+        now = time.monotonic()
+        if not self.tty and not final and now - self.last < self.EVERY:
+            return
+        self.last = now
+        done = [r for r in runs if not r.problem or r.problem != "interrupted"]
+        line = (f"osdkc selftest: {len(done)}/{self.total} mutants done, {sum(r.killed for r in done)} killed"
+                + (f"; baseline {base.done:,}/{len(base):,} cases" if base is not None else "")
+                + f", {now - self.start:.0f} s")
+        if self.tty:
+            self.stream.write("\r" + line.ljust(79) + ("\n" if final else ""))
+        else:
+            self.stream.write(line + "\n")
+        self.stream.flush()
+
+
 def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,
              max_failures: int = DEFAULT_MAX_FAILURES, timeout: float = DEFAULT_TIMEOUT,
-             baseline: bool = True, vector_files: Sequence[str] | None = None) -> SelftestOutcome:
-    """Run the mutants (default: all) against the vectors; see the module doc."""
+             baseline: bool = True, vector_files: Sequence[str] | None = None,
+             progress: TextIO | None = None) -> SelftestOutcome:
+    """Run the mutants (default: all) against the vectors; see the module doc.
+    SIGINT or SIGTERM (in the main thread) stop every run within moments: the
+    outcome holds the mutants that finished and names the signal."""
 
     chosen = list(names) if names else list(mutants.MUTANTS)
     unknown = [n for n in chosen if n not in mutants.MUTANTS]
@@ -195,15 +267,39 @@ def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,
     t0 = time.monotonic()
     cases = load_cases(list(vector_files) if vector_files else None)
     ordered = interleave(cases)
-    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
-        base = pool.submit(run_mutant, mutants.NONE, ordered, max_failures=0, timeout=max(timeout, 10.0),
-                           description="no fault (the harness itself)") if baseline else None
-        futures = [pool.submit(run_mutant, n, ordered, max_failures=max_failures, timeout=timeout,
-                               description=mutants.MUTANTS[n].description, violates=mutants.MUTANTS[n].violates,
-                               expect=mutants.MUTANTS[n].expect) for n in chosen]
-        runs = [f.result() for f in futures]
-        base_run = base.result() if base is not None else None
-    return SelftestOutcome(runs, base_run, len(cases), time.monotonic() - t0)
+    running = _Running()
+    shown = _Progress(len(chosen), progress)
+    interrupted: str | None = None
+    pool = ThreadPoolExecutor(max_workers=max(1, jobs))
+    with SignalStop() as stop:
+        try:
+            base = pool.submit(run_mutant, mutants.NONE, ordered, max_failures=0, timeout=max(timeout, 10.0),
+                               description="no fault (the harness itself)", running=running) if baseline else None
+            futures = [pool.submit(run_mutant, n, ordered, max_failures=max_failures, timeout=timeout,
+                                   description=mutants.MUTANTS[n].description, violates=mutants.MUTANTS[n].violates,
+                                   expect=mutants.MUTANTS[n].expect, running=running) for n in chosen]
+            everything = futures + ([base] if base is not None else [])
+            # Waiting in short slices keeps the main thread where a signal
+            # handler can run, and gives the progress line its beat.
+            while wait(everything, timeout=0.5).not_done:
+                shown.show([f.result() for f in futures if f.done()], running.sources.get(mutants.NONE))
+        except Interrupted as i:
+            interrupted = i.signame
+        finally:
+            stop.disarm()  # from here on a signal is only noted
+            if interrupted or stop.received:
+                interrupted = interrupted or stop.received
+                running.stop()
+            pool.shutdown(wait=True, cancel_futures=True)
+    runs = [f.result() for f in futures if f.done() and not f.cancelled()]
+    base_run = base.result() if base is not None and base.done() and not base.cancelled() else None
+    if interrupted:
+        runs = [r for r in runs if r.problem != "interrupted"]
+        if base_run is not None and base_run.problem == "interrupted":
+            base_run = None
+    else:
+        shown.show(runs, None, final=True)
+    return SelftestOutcome(runs, base_run, len(cases), time.monotonic() - t0, interrupted, len(chosen))
 
 
 # ---- output ------------------------------------------------------------------------
@@ -252,6 +348,13 @@ def report(outcome: SelftestOutcome, max_failures: int, out: TextIO) -> None:
     for r in survivors:
         why = r.problem or f"passed all {r.cases_run} vectors"
         out.write(f"SURVIVED: {r.name}: {why} (violates {', '.join(r.violates)})\n")
+    if outcome.interrupted:
+        # no score: the mutants that did not finish were neither killed nor survived
+        out.write(f"INTERRUPTED by {outcome.interrupted} after {outcome.seconds:.1f} s: no verdict "
+                  f"({len(outcome.runs)} of {outcome.planned} mutants finished, {outcome.killed} of them killed"
+                  + ("; the baseline did not finish" if b is None else "") + ")\n")
+        out.flush()
+        return
     out.write(f"mutation score: {outcome.killed}/{len(outcome.runs)} killed "
               f"({100 * outcome.score:.1f}%) in {outcome.seconds:.1f} s\n")
     if b is not None and (b.failures or b.problem):
@@ -277,6 +380,8 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> N
     p.add_argument("--vectors", action="append", metavar="FILE",
                    help="vector file(s) to use instead of vectors/*.json (repeatable)")
     p.add_argument("--list", action="store_true", help="list the mutants and what they violate, then exit")
+    p.add_argument("-q", "--quiet", action="store_true",
+                   help="no progress on standard error (mutants done and killed so far)")
 
 
 def run_selftest(args: argparse.Namespace) -> int:
@@ -285,6 +390,9 @@ def run_selftest(args: argparse.Namespace) -> int:
             print(f"{m.name:30} {', '.join(m.violates):45} {m.description}")
         return 0
     outcome = selftest(args.mutant, jobs=args.jobs, max_failures=args.max_failures, timeout=args.timeout,
-                       baseline=not args.no_baseline, vector_files=args.vectors)
+                       baseline=not args.no_baseline, vector_files=args.vectors,
+                       progress=None if args.quiet else sys.stderr)
     report(outcome, args.max_failures, sys.stdout)
+    if outcome.interrupted:
+        return exit_status_of_signal(outcome.interrupted)
     return 0 if outcome.ok else 1

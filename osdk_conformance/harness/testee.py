@@ -31,7 +31,10 @@ one of four kinds:
 - `testee_crash`: the testee ended (closed its output, exited, or was killed
   by a signal) in any other way.
 
-After a failure the process is gone; the next request starts it again.
+After a failure the process is gone; the next request starts it again and
+first asks it for its capabilities, with the start-up allowance, so the
+start-up of a restarted testee on a busy machine is not charged to that
+request.
 When `max_restarts` restarts in a row (default 5) have not produced one
 successful response, the next request that needs a restart raises
 `TesteeGaveUp` instead. A testee that cannot be started at all raises
@@ -68,6 +71,8 @@ DEFAULT_MEMORY_MB = 1024
 DEFAULT_MAX_RESTARTS = 5
 
 _READ_SIZE = 1 << 20
+_CAPABILITIES = b'{"op":"capabilities"}\n'
+
 _EXIT_GRACE = 1.0  # seconds a testee gets to exit after its input is closed
 _MEMORY_MESSAGES = re.compile(
     rb"MemoryError|out of memory|cannot allocate memory|bad_alloc|memory allocation of \d+ bytes failed"
@@ -241,6 +246,20 @@ class Testee:
             self._drain_stderr(0.02)
         self.kill()
 
+    def stop_from_another_thread(self) -> None:
+        """Kill the testee's process group and leave the rest to the thread
+        using the testee: its request in progress ends as a crash, and that
+        thread reaps the process and closes the pipes (doing it here would
+        pull them from under its feet)."""
+        proc = self._proc
+        if proc is None or proc.returncode is not None:
+            return
+        self._killed_by_us = True
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+
     def kill(self) -> None:
         """Kill the testee's process group now and reap the testee."""
         proc = self._proc
@@ -282,25 +301,43 @@ class Testee:
 
     def request(self, obj: dict) -> dict:
         """Send one request, return the response object or raise."""
+        restarted = False
         if self._proc is None:
             if self.starts:
                 if self.restarts_in_a_row >= self.max_restarts:
                     raise TesteeGaveUp(f"the testee failed {self.restarts_in_a_row + 1} times in a row "
                                        f"({self.restarts_in_a_row} restarts without a successful response)")
                 self.restarts_in_a_row += 1
+                restarted = True
             self.start()
         # the first start, whether this call or the caller started the testee
         first_start = self.starts == 1 and not self._answered
-        data = (json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n").encode()
         stderr_before = self.stderr.total
         try:
-            # the first request also waits for the start-up (an interpreter or a
-            # JVM loading on a busy machine is not a slow answer); restarts do
-            # not, so a testee that keeps hanging costs the timeout each time
+            if restarted:
+                # A restarted testee is first asked for its capabilities with the
+                # start-up allowance, so an interpreter or a JVM loading again on
+                # a busy machine is not charged to the request that follows,
+                # while a testee that keeps hanging on requests still costs the
+                # timeout each time.
+                try:
+                    self._answer(self._exchange(_CAPABILITIES, STARTUP_SECONDS), stderr_before)
+                except TesteeFailure as f:
+                    f.message = f"restarted, it did not answer the capabilities request: {f.message}"
+                    raise
+            data = (json.dumps(obj, separators=(",", ":"), allow_nan=False) + "\n").encode()
+            # the first request also waits for the start-up
             line = self._exchange(data, STARTUP_SECONDS if first_start else 0.0)
         except TesteeFailure as f:
-            f.stderr = self._stderr_since(stderr_before)
+            f.stderr = f.stderr or self._stderr_since(stderr_before)
             raise
+        response = self._answer(line, stderr_before)
+        self.restarts_in_a_row = 0
+        self._answered = True
+        return response
+
+    def _answer(self, line: bytes, stderr_before: int) -> dict:
+        """The response object in `line`, or TesteeFailure (garbage)."""
         try:
             response = json.loads(line)
         except (ValueError, RecursionError):
@@ -312,8 +349,6 @@ class Testee:
             self.kill()
             raise TesteeFailure(TESTEE_GARBAGE, f"the response is not a response object ({problem}): {_show(line)}",
                                 self._stderr_since(stderr_before))
-        self.restarts_in_a_row = 0
-        self._answered = True
         return response
 
     def _stderr_since(self, total_before: int, limit: int = 4096) -> str:

@@ -55,6 +55,7 @@ from typing import Any, Iterable, Sequence
 from osdk_conformance.core.commands import ack_code_text
 from osdk_conformance.core.errors import UsageError, cannot_read
 from osdk_conformance.core.paths import ROOT, SPEC
+from osdk_conformance.core.schema_check import SchemaCheck
 from osdk_conformance.harness.spec_rules import RULES
 from osdk_conformance.harness.vector_tables import tables
 from osdk_conformance.reference.codec import BadRequest, answer
@@ -383,7 +384,7 @@ class CheckReport:
         self.problems = [] if self.problems is None else self.problems
 
 
-def _validator():
+def _validator() -> SchemaCheck:
     from jsonschema import Draft202012Validator
 
     schema = read_json(SCHEMA_PATH)
@@ -391,7 +392,7 @@ def _validator():
         Draft202012Validator.check_schema(schema)
     except Exception as e:  # a broken schema is a problem of the kit, reported without a traceback
         raise VectorFileError(f"{SCHEMA_PATH} is not a valid JSON Schema: {getattr(e, 'message', e)}") from None
-    return Draft202012Validator(schema)
+    return SchemaCheck(schema)
 
 
 def known_flags() -> tuple[set[str], set[str]]:

@@ -11,6 +11,13 @@ That is the reference, `decode_events`. What `osdkc decode`, the Python
 API and the acceptance receiver run (`stream_events`, `payload_body`) is the
 native accelerator when it is installed (accel.py; OSDKC_ACCEL chooses),
 which gives the same events.
+
+What a file or standard input holds besides frames is said on standard
+error after the events (`Tally`): where the recording stopped inside a frame
+(that truncated_frame, and the rescan of its bytes, are marked
+`"capture_end": true` and not counted as errors: `mark_capture_end`), a
+pcapng block cut at the end, no frame at all, and the profile the
+broadcasts decode with when most do not decode with --profile.
 """
 from __future__ import annotations
 
@@ -27,10 +34,11 @@ import construct
 from osdk_conformance.core import model
 from osdk_conformance.core.capture import CaptureError, CaptureReader, NAMES, is_pcapng
 from osdk_conformance.core.commands import command_name
-from osdk_conformance.core.deframe import Deframer, Frame, Garbage, Rejected, deframe, header_fields
+from osdk_conformance.core.deframe import (HEADER_LEN, MAX_LEN, Deframer, Frame, Garbage, Rejected, deframe,
+                                           frame_length, header_fields)
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.reference import accel, fastframe, values
-from osdk_conformance.core.rules import profile as load_profile
+from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_construct.compiled import parse
 from osdk_construct.enums import profile_value
 from osdk_construct.frame import build_frame, osdk_frame, parse_frame
@@ -288,15 +296,65 @@ def read_chunks(stream: IO[bytes]) -> Iterator[bytes]:
         yield chunk
 
 
+class InputSeen:
+    """What `osdkc decode` read, noted as it went by, for what it says after
+    the events: the input's size, whether it was a pcapng capture and how
+    much of a block cut at its end it holds, and each direction's byte count
+    with its latest bytes. The bytes of any event are among those latest
+    bytes when the event comes: the events of a piece come before the next
+    piece is read, and the deframer holds back less than one longest frame
+    (MAX_LEN bytes) from the pieces before."""
+
+    def __init__(self) -> None:
+        self.size = 0                        # bytes of the input: the file's, standard input's
+        self.pcapng = False
+        self.cut_block = 0                   # bytes of an incomplete last pcapng block
+        self.received: dict[str, int] = {}   # bytes decoded, by direction
+        self._latest: dict[str, bytearray] = {}
+
+    def count(self, chunks: Iterable[bytes]) -> Iterator[bytes]:
+        for chunk in chunks:
+            self.size += len(chunk)
+            yield chunk
+
+    def piece(self, direction: str, data: bytes) -> None:
+        latest = self._latest.setdefault(direction, bytearray())
+        latest += data
+        del latest[:max(0, len(latest) - len(data) - MAX_LEN)]  # bounded: this piece and one frame before it
+        self.received[direction] = self.received.get(direction, 0) + len(data)
+
+    def bytes_at(self, direction: str, offset: int, length: int) -> bytes | None:
+        """Bytes [offset, offset + length) of a direction, when they are among its latest; else None."""
+        latest = self._latest.get(direction, bytearray())
+        start = offset - (self.received.get(direction, 0) - len(latest))
+        if start < 0 or start + length > len(latest):
+            return None
+        return bytes(latest[start:start + length])
+
+    def reaches_end(self, direction: str, ev: dict) -> bool:
+        """Whether an event's bytes run to the end of its direction's input."""
+        return ev["offset"] + ev.get("length", 0) == self.received.get(direction, 0)
+
+
 def capture_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozenset({"rx"}),
-                   name: str = "capture") -> Iterator[tuple[str, bytes]]:
+                   name: str = "capture", seen: InputSeen | None = None) -> Iterator[tuple[str, bytes]]:
     """(direction, bytes) in input order: the chunks as they are, all "rx",
     or, when they form a pcapng capture (osdkc device --capture; detected by
     the Section Header Block magic), the records of the wanted directions,
     read block by block. A capture that cannot be read is a UsageError naming
     `name` and the byte offset; an incomplete last block (a killed writer)
-    is left out, as it is in `osdkc device --replay`."""
+    is left out, as it is in `osdkc device --replay`, and noted in `seen`
+    (when given, it notes everything that goes by: InputSeen)."""
+    if seen is None:
+        yield from _pieces(chunks, directions, name, InputSeen())
+        return
+    for direction, data in _pieces(seen.count(chunks), directions, name, seen):
+        seen.piece(direction, data)
+        yield direction, data
 
+
+def _pieces(chunks: Iterable[bytes], directions: frozenset[str], name: str,
+            seen: InputSeen) -> Iterator[tuple[str, bytes]]:
     it = iter(chunks)
     first = next(it, b"")
     if not is_pcapng(first):
@@ -308,6 +366,7 @@ def capture_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozens
         for chunk in it:
             yield "rx", chunk
         return
+    seen.pcapng = True
     reader = CaptureReader(chain([first], it), name)
     try:
         for rec in reader:
@@ -315,6 +374,7 @@ def capture_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozens
                 yield NAMES[rec.direction], rec.data
     except CaptureError as e:
         raise UsageError(str(e)) from None
+    seen.cut_block = reader.partial_tail
 
 
 def received_bytes(chunks: Iterable[bytes], name: str = "capture") -> Iterator[bytes]:
@@ -333,9 +393,13 @@ def both_directions_events(chunks: Iterable[bytes], profile: str, name: str) -> 
     direction, in capture order. Each direction is deframed on its own (its
     offsets count its own bytes); one decoder sees both, so an ACK the flight
     controller sent is matched with the command the host sent."""
+    return _both_events(capture_pieces(chunks, frozenset({"rx", "tx"}), name), profile)
+
+
+def _both_events(pieces: Iterable[tuple[str, bytes]], profile: str) -> Iterator[dict]:
     decoder = Decoder(profile)
     deframers = {"rx": Deframer(), "tx": Deframer()}
-    for direction, data in capture_pieces(chunks, frozenset(deframers), name):
+    for direction, data in pieces:
         for ev in deframers[direction].feed(data):
             yield {"direction": direction, **decoder.event(ev)}
     for direction, d in deframers.items():
@@ -343,15 +407,18 @@ def both_directions_events(chunks: Iterable[bytes], profile: str, name: str) -> 
             yield {"direction": direction, **decoder.event(ev)}
 
 
-def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input") -> Iterator[dict]:
+def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input",
+                  seen: InputSeen | None = None) -> Iterator[dict]:
     """What `osdkc decode` prints for --direction rx, tx or both: the native
-    decoder's events when it is to run (accel.py), else the reference's."""
+    decoder's events when it is to run (accel.py), else the reference's.
+    `seen`, when given, notes what the input held (InputSeen)."""
     native = accel.stream(profile)
     if direction == "both":
+        pieces = capture_pieces(chunks, frozenset({"rx", "tx"}), name, seen)
         if native is None:
-            return both_directions_events(chunks, profile, name)
-        return _native_both(native, capture_pieces(chunks, frozenset({"rx", "tx"}), name))
-    pieces = capture_pieces(chunks, frozenset({direction}), name)
+            return _both_events(pieces, profile)
+        return _native_both(native, pieces)
+    pieces = capture_pieces(chunks, frozenset({direction}), name, seen)
     if native is None:
         return decode_events((data for _, data in pieces), profile)
     return accel.events((data for _, data in pieces), native)
@@ -397,7 +464,40 @@ def payload_body(profile: str) -> Callable[[bytes, int, int, bool], dict]:
     return construct_body
 
 
+BROADCAST = (0x02, 0x00)  # command set and id of the broadcast (push data)
+
+
+def profiles_decoding(values: Sequence[bytes], profile: str) -> list[str]:
+    """The profiles other than `profile` under which every one of `values`
+    (broadcast values, flag word first) decodes: what a stream that does not
+    decode with `profile` was most likely sent with. `osdkc decode` and the
+    `decode.profile` check of `osdkc device` both suggest them."""
+    fits = []
+    for other in profile_names():
+        if other == profile:
+            continue
+        construct_ = payload(*BROADCAST, False, other)
+        if all(_parses(construct_, value) for value in values):
+            fits.append(other)
+    return fits
+
+
+def _parses(construct_: construct.Construct, value: bytes) -> bool:
+    try:
+        construct_.parse(value)
+    except Exception:  # whatever the reason, the value does not fit that layout
+        return False
+    return True
+
+
+EPILOG = ("exit status: 0 when every frame decoded; 1 when an error event was counted, or a FILE or standard "
+          "input holds no frame at all; 2 when the input cannot be read or the arguments are wrong. Where a FILE "
+          "or standard input ends inside a frame (a recording stopped there), that error event has "
+          "\"capture_end\": true and is not counted; --hex bytes are taken as given, a frame they cut short counts.")
+
+
 def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
+    d.epilog = EPILOG
     d.add_argument("--profile", required=True, choices=profiles, help="broadcast wire profile of the flight controller")
     src = d.add_mutually_exclusive_group(required=True)
     src.add_argument("--hex", help="the bytes as hex (spaces and colons allowed)")
@@ -407,27 +507,159 @@ def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     d.add_argument("--pretty", action="store_true", help="indent each JSON object")
 
 
-def run_decode(args: argparse.Namespace) -> int:
-    name = args.file if args.file not in (None, "-") else "--hex" if args.hex is not None else "standard input"
+def _whole_frame(ev: dict) -> bool:
+    """Whether an event is about a frame the receiver found whole: decoded,
+    or with its value or CRC-32 rejected (not a frame the input cuts short)."""
+    return ev["kind"] == "frame" or "frame_header" in ev or ev.get("error") == "bad_crc32"
+
+
+def mark_capture_end(events: Iterable[dict], seen: InputSeen, direction: str) -> Iterator[dict]:
+    """The events of a recording (a file, standard input), with
+    `"capture_end": true` on the errors about the frame the recording stopped
+    inside: in each direction, the first truncated_frame after the last
+    whole frame, whose bytes run to the end of that direction's input, and
+    the errors after it, which are the receiver's rescan of those same bytes
+    (a 0xAA in the cut frame's value taken for a header). A truncated_frame
+    followed by a whole frame is a frame the device cut short: an error like
+    any other.
+
+    A truncated_frame comes only once the input has ended (Deframer.finish),
+    so from the first one on the events are held back until the end shows
+    which one the tail starts at: at most the rescan of one frame's bytes
+    per direction."""
+    held: list[dict] = []
+    for ev in events:
+        if held or ev.get("error") == "truncated_frame":
+            held.append(ev)
+        else:
+            yield ev
+    where = [ev.get("direction", direction) for ev in held]
+    last_whole = {d: i for i, (d, ev) in enumerate(zip(where, held)) if _whole_frame(ev)}
+    tail: dict[str, int] = {}
+    for i, (d, ev) in enumerate(zip(where, held)):
+        if (d not in tail and i > last_whole.get(d, -1) and ev.get("error") == "truncated_frame"
+                and seen.reaches_end(d, ev)):
+            tail[d] = i
+    for i, (d, ev) in enumerate(zip(where, held)):
+        yield {**ev, "capture_end": True} if ev["kind"] == "error" and i >= tail.get(d, len(held)) else ev
+
+
+class Tally:
+    """What `osdkc decode` says on standard error after the events, and its
+    exit status, from the events as they go by."""
+
+    SAMPLES = 200  # undecoded broadcast values kept to try the other profiles on, as `osdkc device` keeps
+
+    def __init__(self, profile: str, direction: str, seen: InputSeen) -> None:
+        self.profile = profile
+        self.direction = direction
+        self.seen = seen
+        self.errors = 0
+        self.frames = 0                    # whole frames, decoded or not
+        self.broadcasts = 0                # broadcast frames, decoded or not
+        self.undecoded: list[bytes] = []   # values of broadcasts that did not decode (the first SAMPLES)
+        self.undecoded_count = 0
+        self.tails: dict[str, dict] = {}   # the truncated_frame a recording ends inside, by direction
+
+    def add(self, ev: dict) -> None:
+        if ev.get("capture_end"):
+            self.tails.setdefault(ev.get("direction", self.direction), ev)
+            return
+        if ev["kind"] == "error":
+            self.errors += 1
+        if not _whole_frame(ev):
+            return
+        self.frames += 1
+        if ev.get("command") == "broadcast":
+            self.broadcasts += 1
+        elif "frame_header" in ev:
+            self._undecoded(ev.get("direction", self.direction), ev)
+
+    def _undecoded(self, d: str, ev: dict) -> None:
+        raw = self.seen.bytes_at(d, ev["offset"], ev["length"])
+        if raw is None or len(raw) < HEADER_LEN + 2 + 4:
+            return
+        h = header_fields(raw)
+        if h["is_ack"] or h["enc"] or tuple(raw[HEADER_LEN:HEADER_LEN + 2]) != BROADCAST:
+            return  # not a plain broadcast: which profile it wants cannot be told from its value
+        self.broadcasts += 1
+        self.undecoded_count += 1
+        if len(self.undecoded) < self.SAMPLES:
+            self.undecoded.append(raw[HEADER_LEN + 2:-4])
+
+    def notes(self, name: str, recording: bool) -> list[str]:
+        """The lines for standard error, each about what the events alone do not say."""
+        out = []
+        if self.seen.cut_block:
+            at = self.seen.size - self.seen.cut_block
+            out.append(f"warning: the capture is cut inside a pcapng block after {self.seen.cut_block} bytes "
+                       f"(the block at offset {at}: its writer was stopped or killed); the frames before it are decoded")
+        for d, ev in self.tails.items():
+            out.append(self._tail_note(d, ev))
+        if self.undecoded_count * 2 > self.broadcasts:
+            out.append(self._profile_note())
+        if recording and not self.frames:
+            out.append(f"no frame found in {name} ({self.seen.size} bytes{self._what_was_read()})")
+        return out
+
+    def _tail_note(self, d: str, ev: dict) -> str:
+        have = ev["length"]
+        header = self.seen.bytes_at(d, ev["offset"], HEADER_LEN) if have >= HEADER_LEN else None
+        # a header the deframer saw whole was checked: its LEN is the frame's length
+        want = f"{frame_length(header)}" if header else f"{HEADER_LEN}+"
+        which = f" ({d})" if self.direction == "both" else ""
+        return (f"the input{which} ends inside a frame ({have} of {want} bytes): the recording stopped there; "
+                "not counted as an error")
+
+    def _profile_note(self) -> str:
+        said = f"{self.undecoded_count} of {self.broadcasts} broadcast frames do not decode as {self.profile}"
+        fits = profiles_decoding(self.undecoded, self.profile)
+        if fits:
+            return f"{said}; they decode as {' and '.join(fits)}: try --profile {fits[0]}"
+        others = ", ".join(p for p in profile_names() if p != self.profile)
+        return f"{said}, and no other profile ({others}) decodes them either"
+
+    def _what_was_read(self) -> str:
+        if not self.seen.pcapng:
+            return ""
+        wanted = ("rx", "tx") if self.direction == "both" else (self.direction,)
+        held = " and ".join(f"{self.seen.received.get(d, 0)} {d}" for d in wanted)
+        return f"; a pcapng capture holding {held} bytes"
+
+    def status(self, recording: bool) -> int:
+        return 1 if self.errors or (recording and not self.frames) else 0
+
+
+def _open_input(args: argparse.Namespace) -> tuple[str, Iterable[bytes], IO[bytes] | None]:
+    """The input's name for messages, its chunks, and the file to close after."""
     if args.hex is not None:
-        source: Iterable[bytes] = [parse_hex(args.hex)]
-        close = None
-    elif args.file == "-":
-        source, close = read_chunks(sys.stdin.buffer), None
-    elif args.file:
+        return "--hex", [parse_hex(args.hex)], None
+    if args.file == "-":
+        return "standard input", read_chunks(sys.stdin.buffer), None
+    if args.file:
         try:
             fh = open(args.file, "rb")
         except OSError as e:
             raise UsageError(cannot_read(args.file, e)) from None
-        source, close = read_chunks(fh), fh
-    else:
-        raise UsageError("give --hex HEX, a FILE, or - for standard input")
-    errors = 0
+        return args.file, read_chunks(fh), fh
+    raise UsageError("give --hex HEX, a FILE, or - for standard input")
+
+
+def run_decode(args: argparse.Namespace) -> int:
+    name, source, close = _open_input(args)
+    # A file or standard input is a recording: where it ends, the recording
+    # stopped, whatever the device was sending. --hex is exactly the bytes
+    # the user meant; a frame they cut short is theirs to see as an error.
+    recording = args.hex is None
+    seen = InputSeen()
+    tally = Tally(args.profile, args.direction, seen)
     indent = 2 if args.pretty else None
     try:
-        for ev in stream_events(source, args.profile, args.direction, name):
-            if ev["kind"] == "error":
-                errors += 1
+        events = stream_events(source, args.profile, args.direction, name, seen)
+        if recording:
+            events = mark_capture_end(events, seen, args.direction)
+        for ev in events:
+            tally.add(ev)
             sys.stdout.write(model.dumps(ev, indent=indent) + "\n")
     except BrokenPipeError:
         raise
@@ -437,4 +669,6 @@ def run_decode(args: argparse.Namespace) -> int:
         if close:
             close.close()
     sys.stdout.flush()
-    return 1 if errors else 0
+    for line in tally.notes(name, recording):
+        print(f"osdkc decode: {line}", file=sys.stderr)
+    return tally.status(recording)

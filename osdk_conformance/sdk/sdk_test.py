@@ -372,7 +372,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--filter", metavar="REGEX", help="only cases whose id matches REGEX (re.search)")
     ap.add_argument("--timeout", type=positive_float, metavar="S",
                     help=f"seconds per request (default {DEFAULT_TIMEOUT:g})")
-    ap.add_argument("--no-progress", action="store_true", help="no progress output on stderr")
+    ap.add_argument("-q", "--quiet", dest="no_progress", action="store_true",
+                   help="no progress output on stderr")
+    # the former spelling, still accepted; -q/--quiet is the one every command shares
+    ap.add_argument("--no-progress", dest="no_progress", action="store_true", help=argparse.SUPPRESS)
 
 
 def _pattern(args: argparse.Namespace) -> re.Pattern | None:

@@ -44,7 +44,7 @@ from pathlib import Path
 from osdk_construct.payload import VERSION_ID_SIZE, osdk_payload, version_ack_value
 
 from osdk_conformance.core.deframe import Deframer, Frame
-from osdk_conformance.core.errors import UsageError
+from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import (baud_rate, non_negative_float, non_negative_int, probability, rate_change,
                                            tcp_port, uint32)
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
@@ -1069,7 +1069,10 @@ def run_sim(args: argparse.Namespace) -> int:
         option = "--log-acks" if args.log_acks and e.filename == args.log_acks else "--log-broadcast"
         raise UsageError(f"{option}: cannot write {e.filename}: {e.strerror or e}") from None
 
+    stopped_by: list[str] = []
+
     def stop(signum, frame):
+        stopped_by.append(signal.Signals(signum).name)
         sim.running = False
 
     def go(signum, frame):
@@ -1099,6 +1102,8 @@ def run_sim(args: argparse.Namespace) -> int:
                      last_seq=(sim.seq - 1) & 0xFFFF, **sim.authority_state())
         if args.stats:
             Path(args.stats).write_text(json.dumps(stats, indent=2) + "\n")
-        print("osdkc sim: stopped; " + ", ".join(f"{k} {v}" for k, v in stats.items() if isinstance(v, int)),
-              file=sys.stderr, flush=True)
-    return 0
+        print("osdkc sim: stopped" + (f" by {stopped_by[0]}" if stopped_by else "") + "; "
+              + ", ".join(f"{k} {v}" for k, v in stats.items() if isinstance(v, int)), file=sys.stderr, flush=True)
+    # a signal ends it the way it ends every osdkc command (130/143), after the
+    # drain and the --stats file; --exit-after is a normal end
+    return exit_status_of_signal(stopped_by[0]) if stopped_by else 0
