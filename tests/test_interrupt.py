@@ -140,7 +140,8 @@ def test_kit_stops_at_the_interrupted_step_and_runs_no_later_one(tmp_path):
     (reports / "device.html").write_text("complete")
     child = Child("kit", "--report-dir", str(reports))
     child.wait_for("== osdkc run", timeout=300)
-    child.wait_for("osdkc run:", timeout=120)        # the implementations are running
+    # the implementations are running (the heartbeat comes 10 s in, once every run has been started)
+    child.wait_for("implementations done", stream="err", timeout=180)
     code, out, err, seconds = child.interrupt(signal.SIGINT)
     assert code == 130, out + err
     assert "kit: INTERRUPTED by SIGINT during run" in out and "not run: selftest, device, fuzz" in out
