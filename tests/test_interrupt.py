@@ -42,7 +42,10 @@ class Child:
         self.mark = uuid.uuid4().hex
         self.proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", *args], cwd=ROOT,
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                                     env=dict(os.environ, OSDKC_TEST_MARK=self.mark))
+                                     env=dict(os.environ, OSDKC_TEST_MARK=self.mark),
+                                     # a pytest-xdist worker ignores SIGINT, and an ignored signal stays
+                                     # ignored across exec: give the child the disposition a shell gives
+                                     preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
         self.out: queue.Queue = queue.Queue()
         self.err: queue.Queue = queue.Queue()
         self.seen: list[str] = []
