@@ -786,18 +786,43 @@ def status_table(summaries: list[dict]) -> str:
 _PROGRESS_LINE = re.compile(r"osdkc run: ([\d,]+)/([\d,]+) cases")
 
 
-class _Heartbeat:
-    """What `run --impl all` is doing: the implementations done, and the cases
-    done by each running one (the last progress line in its log). A line
-    rewritten on a terminal; otherwise a line when one finishes and at least
-    every 10 s."""
+class StatusLine:
+    """A progress line: rewritten in place on a terminal (at most twice a
+    second), otherwise written as a new line when something changed or at
+    least every `every` seconds; nothing without a stream."""
 
-    EVERY = 10.0
-
-    def __init__(self, out_dir: Path, impls: Sequence[str], stream: TextIO | None) -> None:
-        self.out_dir, self.impls, self.stream = out_dir, impls, stream
+    def __init__(self, stream: TextIO | None, every: float = 10.0) -> None:
+        self.stream, self.every = stream, every
         self.tty = bool(stream is not None and stream.isatty())
         self.start = self.last = time.monotonic()
+
+    def due(self, changed: bool = False, final: bool = False) -> bool:
+        if self.stream is None:
+            return False
+        since = time.monotonic() - self.last
+        return final or changed or since >= (0.5 if self.tty else self.every)
+
+    def write(self, line: str, final: bool = False) -> None:
+        assert self.stream is not None
+        self.last = time.monotonic()
+        if self.tty:
+            self.stream.write("\r\x1b[K" + line[:200] + ("\n" if final else ""))
+        else:
+            self.stream.write(line + "\n")
+        self.stream.flush()
+
+    def seconds(self) -> float:
+        return time.monotonic() - self.start
+
+
+class _Heartbeat:
+    """What `run --impl all` is doing: the implementations done, and the cases
+    done by each running one (the last progress line in its log), on a
+    StatusLine (also when one finishes)."""
+
+    def __init__(self, out_dir: Path, impls: Sequence[str], stream: TextIO | None) -> None:
+        self.out_dir, self.impls = out_dir, impls
+        self.line = StatusLine(stream)
         self.done_before = 0
         self.final = False
 
@@ -811,22 +836,13 @@ class _Heartbeat:
 
     def show(self, done: dict[str, bool], final: bool = False) -> None:
         self.final = self.final or final
-        if self.stream is None:
-            return
-        now = time.monotonic()
         finished = sum(done.values())
-        if not (final or self.tty and now - self.last >= 0.5 or now - self.last >= self.EVERY
-                or finished != self.done_before):
+        if not self.line.due(changed=finished != self.done_before, final=final):
             return
-        self.last, self.done_before = now, finished
+        self.done_before = finished
         running = ", ".join(f"{impl} {self._cases(impl)}" for impl in self.impls if not done[impl])
-        line = (f"osdkc run: {finished}/{len(self.impls)} implementations done, {now - self.start:.0f} s"
-                + (f"; running: {running}" if running else ""))
-        if self.tty:
-            self.stream.write("\r\x1b[K" + line[:200] + ("\n" if final else ""))
-        else:
-            self.stream.write(line + "\n")
-        self.stream.flush()
+        self.line.write(f"osdkc run: {finished}/{len(self.impls)} implementations done, {self.line.seconds():.0f} s"
+                        + (f"; running: {running}" if running else ""), final)
 
 
 def run_all(args: argparse.Namespace, chosen: Sequence[str]) -> int:

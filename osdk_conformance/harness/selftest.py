@@ -44,7 +44,7 @@ from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positi
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.harness import mutants
 from osdk_conformance.harness.report import FAIL
-from osdk_conformance.harness.runner import Interrupted, SignalStop, run_cases
+from osdk_conformance.harness.runner import Interrupted, SignalStop, StatusLine, run_cases
 from osdk_conformance.harness.testee import Testee, TesteeStartError
 from osdk_conformance.harness.vectors import compare, load_cases
 
@@ -224,32 +224,19 @@ class SelftestOutcome:
 
 
 class _Progress:
-    """Mutants finished and killed so far: a line rewritten on a terminal,
-    otherwise a line whenever 10 s have passed since the last one."""
-
-    EVERY = 10.0
+    """Mutants finished and killed so far, and the baseline's cases, on a StatusLine."""
 
     def __init__(self, total: int, stream: TextIO | None) -> None:
-        self.total, self.stream = total, stream
-        self.tty = bool(stream is not None and stream.isatty())
-        self.start = self.last = time.monotonic()
+        self.total = total
+        self.line = StatusLine(stream)
 
     def show(self, runs: Sequence[MutantRun], base: _StopAfter | None, final: bool = False) -> None:
-        if self.stream is None:
+        if not self.line.due(final=final):
             return
-        now = time.monotonic()
-        if not self.tty and not final and now - self.last < self.EVERY:
-            return
-        self.last = now
-        done = [r for r in runs if not r.problem or r.problem != "interrupted"]
-        line = (f"osdkc selftest: {len(done)}/{self.total} mutants done, {sum(r.killed for r in done)} killed"
-                + (f"; baseline {base.done:,}/{len(base):,} cases" if base is not None else "")
-                + f", {now - self.start:.0f} s")
-        if self.tty:
-            self.stream.write("\r" + line.ljust(79) + ("\n" if final else ""))
-        else:
-            self.stream.write(line + "\n")
-        self.stream.flush()
+        done = [r for r in runs if r.problem != "interrupted"]
+        self.line.write(f"osdkc selftest: {len(done)}/{self.total} mutants done, {sum(r.killed for r in done)} killed"
+                        + (f"; baseline {base.done:,}/{len(base):,} cases" if base is not None else "")
+                        + f", {self.line.seconds():.0f} s", final)
 
 
 def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,

@@ -171,6 +171,16 @@ def _preexec(memory_bytes: int):
 _LIVE: "weakref.WeakSet[Testee]" = weakref.WeakSet()
 
 
+def _kill_group(proc: subprocess.Popen) -> None:
+    """SIGKILL the testee's process group. The testee is not reaped yet (at
+    most a zombie), so its pid still names its group: this cannot hit an
+    unrelated process."""
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
 @atexit.register
 def _kill_all() -> None:
     for t in list(_LIVE):
@@ -255,10 +265,7 @@ class Testee:
         if proc is None or proc.returncode is not None:
             return
         self._killed_by_us = True
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        _kill_group(proc)
 
     def kill(self) -> None:
         """Kill the testee's process group now and reap the testee."""
@@ -266,12 +273,7 @@ class Testee:
         if proc is None:
             return
         self._proc = None
-        # The testee is not reaped yet (at most a zombie), so its pid still
-        # names its process group: this cannot hit an unrelated process.
-        try:
-            os.killpg(proc.pid, signal.SIGKILL)
-        except (ProcessLookupError, PermissionError):
-            pass
+        _kill_group(proc)
         try:
             proc.wait(timeout=5)
         except subprocess.TimeoutExpired:
