@@ -9,6 +9,12 @@ ACCEL_OK  := $(VENV)/.accel-built
 ACCEL_SRC := osdk_conformance/reference/_accel.c $(wildcard generated/c/*.[ch] generated/cpython/*.[ch])
 JS_OK  := tools/ksc/node_modules/.installed
 
+# Python's bytecode caches (__pycache__/, ignored by git) stay on for every
+# recipe: with PYTHONDONTWRITEBYTECODE set in the caller's environment each
+# of the thousands of Python processes the suite and the kit start compiles
+# every module it imports from source again.
+unexport PYTHONDONTWRITEBYTECODE
+
 .PHONY: setup system-packages testees examples kit test quick properties regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with

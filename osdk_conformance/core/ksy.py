@@ -19,6 +19,11 @@ import yaml
 
 from osdk_conformance.core.paths import SPEC
 
+# libyaml's parser where PyYAML has it (its wheels do): the pure-Python one
+# takes a quarter of a second for rules.yaml and the .ksy files, in every
+# process that reads the spec (each testee, simulator and command).
+SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
 
 PRIMITIVE_SIZES = {"u1": 1, "s1": 1, "u2": 2, "s2": 2, "u4": 4, "s4": 4, "f4": 4, "u8": 8, "s8": 8, "f8": 8}
 _TYPE_REF = re.compile(r"(?:(\w+)::)?(\w+)(?:\((.*)\))?")
@@ -259,7 +264,7 @@ def _index(paths: Iterable[Path]) -> KsyIndex:
     types: dict[tuple[str, tuple[str, ...]], KsyType] = {}
     enums: dict[tuple[str, str], dict[int, str]] = {}
     for path in paths:
-        doc = yaml.safe_load(path.read_text())
+        doc = yaml.load(path.read_text(), Loader=SafeLoader)  # noqa: S506 - a safe loader
         fid = doc["meta"]["id"]
         files[fid] = doc
         _walk(fid, (), doc, types)

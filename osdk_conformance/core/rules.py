@@ -35,11 +35,10 @@ from types import MappingProxyType
 from typing import Any
 
 import yaml
-from jsonschema import Draft202012Validator
-from jsonschema.exceptions import SchemaError
 
 from osdk_conformance.core import ksy
 from osdk_conformance.core.paths import ROOT, SPEC
+from osdk_conformance.core.schema_check import SchemaCheck, schema_problem
 
 DEFAULT_RULES_PATH = SPEC / "rules.yaml"
 DEFAULT_SCHEMA_PATH = SPEC / "rules.schema.json"
@@ -176,7 +175,10 @@ class Profile:
 # YAML loading without silent duplicate keys
 
 
-class _StrictLoader(yaml.SafeLoader):
+_SafeLoader = ksy.SafeLoader
+
+
+class _StrictLoader(_SafeLoader):  # type: ignore[misc,valid-type]
     """SafeLoader that rejects a key written twice in one mapping."""
 
 
@@ -195,7 +197,7 @@ def _construct_mapping(loader: _StrictLoader, node: yaml.MappingNode, deep: bool
             continue  # unhashable keys are reported by the base constructor
         seen[key] = key_node
     loader.flatten_mapping(node)
-    return yaml.SafeLoader.construct_mapping(loader, node, deep=deep)
+    return _SafeLoader.construct_mapping(loader, node, deep=deep)
 
 
 _StrictLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
@@ -213,18 +215,17 @@ def _json_path(parts: Sequence[Any]) -> str:
 
 
 @functools.lru_cache(maxsize=4)
-def _validator(schema_path: Path) -> Draft202012Validator:
+def _validator(schema_path: Path) -> SchemaCheck:
     try:
         schema = json.loads(schema_path.read_text(encoding="utf-8"))
     except OSError as exc:
         raise RulesError(f"cannot read rules schema {_display(schema_path)}: {exc.strerror or exc}") from None
     except json.JSONDecodeError as exc:
         raise RulesError(f"rules schema {_display(schema_path)} is not valid JSON: {exc}") from None
-    try:
-        Draft202012Validator.check_schema(schema)
-    except SchemaError as exc:
-        raise RulesError(f"rules schema {_display(schema_path)} is not a valid draft 2020-12 schema: {exc.message}") from None
-    return Draft202012Validator(schema)
+    problem = schema_problem(schema)
+    if problem:
+        raise RulesError(f"rules schema {_display(schema_path)} is not a valid draft 2020-12 schema: {problem}")
+    return SchemaCheck(schema)
 
 
 def _resolve(path: str | Path | None, default: Path) -> Path:

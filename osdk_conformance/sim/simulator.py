@@ -617,7 +617,12 @@ class Simulator:
     def _send(self, data: bytes, frames: int) -> None:
         if not self.t.connected() or self.unplugged_until is not None:
             return
-        if len(self.outbuf) + len(data) > 8192:   # nobody reads: a UART goes on and the bytes are lost
+        if self.outbuf:
+            # the client's buffer is full (nobody reads, or too slowly): a UART
+            # goes on sending and these bytes are lost. Only the one frame the
+            # buffer could not take (or its rest) is kept, so none arrives in part;
+            # a queue of whole frames would reach a client that opens the port
+            # later as seconds of stale frames no flight controller sends.
             self.stats["frames_dropped_tx_full"] += frames
             return
         if not self.baud_ok:
