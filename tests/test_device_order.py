@@ -154,6 +154,48 @@ def test_rates_are_measured_on_the_flight_controllers_clock(fc_hz, arrival, expe
     # on the arrival clock the pause alone would read 114 Hz: more than the 10 % tolerance
 
 
+def _paused_run(pause_at: int, pause: float, fc_hz: float = 100, frames: int = 300) -> Analyzer:
+    """A run at `fc_hz` whose host did not read for `pause` s before frame
+    `pause_at`, then read the frames it owed in one burst."""
+    an = Analyzer(PROFILE)
+    for k in range(frames):
+        t = k / fc_hz
+        if pause_at <= k and t < pause_at / fc_hz + pause:
+            t = pause_at / fc_hz + pause
+        an.feed_rx(1000.0 + t, _broadcast(k, {"time_stamp": 100, "quaternion": 100}, k / fc_hz))
+    return an
+
+
+def test_a_window_with_a_host_pause_is_measured_on_the_fc_clock_the_run_vouches_for():
+    # reliability bench, healthy-active-0074 and -0076: windows beside a pause
+    # of the host read 169 Hz and 66 Hz for 100, on the arrival clock, because
+    # the FC's clock was trusted only where it agreed with the arrivals
+    an = _paused_run(pause_at=150, pause=0.15)
+    assert an.fc_clock_trusted()
+    m = an.measure_rates({"time_stamp": 100}, 1001.6, 1002.0)["time_stamp"]   # opens with the burst
+    assert m["clock"] == "flight controller time stamp"
+    assert m["measured_hz"] == pytest.approx(100.0, abs=3)
+
+
+def test_a_time_stamp_clock_in_the_wrong_unit_is_not_trusted():
+    an = Analyzer(PROFILE)
+    for k in range(300):   # stamps advance twice as fast as the frames come
+        an.feed_rx(1000.0 + k / 100, _broadcast(k, {"time_stamp": 100}, 2 * k / 100))
+    assert not an.fc_clock_trusted()
+    m = an.measure_rates({"time_stamp": 100}, 1000.0, 1003.0)["time_stamp"]
+    assert m["clock"] == "arrival" and m["measured_hz"] == pytest.approx(100.0, abs=1)
+
+
+def test_the_yaw_rate_span_is_on_the_fc_clock():
+    # reliability bench, healthy-active-0078: yaw rate 12.2 deg/s for 10 when
+    # the attitude samples' span was taken on the arrival clock across a pause
+    # the window opens with the burst: its first sample was built 0.15 s before it came
+    an = _paused_run(pause_at=150, pause=0.15)
+    att = [s for s in an.traces["attitude"] if s[0] >= 1001.6]
+    assert att[-1][0] - att[0][0] == pytest.approx(1.34, abs=0.005)   # arrival: 10 % short
+    assert an.sample_span(att) == pytest.approx(1.49, abs=0.005)       # the FC's clock
+
+
 def test_a_frame_at_the_new_rates_in_the_read_of_the_ack_is_not_held_against_the_old_rates():
     from osdk_conformance.device.active import rate_codes
     from osdk_conformance.core.rules import profile

@@ -599,7 +599,7 @@ def movement_check(run: ActiveRun) -> None:
     if vel and len(att) > 2:
         v = [sum(s[i] for s in vel) / len(vel) for i in (1, 2, 3)]
         dyaw = (att[-1][3] - att[0][3] + 180) % 360 - 180
-        rate = dyaw / (att[-1][0] - att[0][0])
+        rate = dyaw / an.sample_span(att)
         details["velocity command (x, y, z m/s; yaw rate deg/s)"] = [*vel_t, yaw_rate_t]
         details["velocity reached"] = [round(x, 3) for x in v] + [round(rate, 2)]
         if max(abs(a - b) for a, b in zip(v, vel_t)) > 0.2:

@@ -22,7 +22,7 @@ import math
 import threading
 from bisect import bisect_left
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
 from osdk_conformance.core.errors import one_line
 from osdk_conformance.core.deframe import HEADER_LEN, Deframer, Frame, Garbage, Rejected
@@ -34,7 +34,8 @@ from osdk_conformance.sim.simulator import quaternion_to_euler
 HZ_OF_CODE = hz_of_code()
 CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
 MAX_EXAMPLES = 5
-CLOCK_AGREEMENT = 0.25   # a time stamp clock that runs off the host's by more is not trusted for rates
+CLOCK_AGREEMENT = 0.05   # a time stamp clock that runs off the host's by more is not trusted for rates
+CLOCK_MIN_SPAN = 0.5      # seconds of time stamps before the FC's clock can be compared with the host's
 
 
 @dataclass
@@ -265,7 +266,7 @@ class Analyzer:
             if flags >> bit & 1:
                 self.item_times[item].append(t)
                 self.item_clock[item].append(clock)
-        self._values(t, data)
+        self._values(t, data, clock)
         if self.on_broadcast:
             self.on_broadcast(t, data)
 
@@ -276,7 +277,7 @@ class Analyzer:
 
     # ---- values ----------------------------------------------------------
 
-    def _values(self, t: float, d) -> None:
+    def _values(self, t: float, d, clock: float | None = None) -> None:
         f = self.findings
         ts = d.get("time_stamp")
         if ts is not None:
@@ -293,7 +294,7 @@ class Analyzer:
             f["quaternion_norm"].add(abs(norm - 1.0) <= 1e-3, lambda: f"t={t:.3f}: |q| = {norm:.6g}")
             if all(math.isfinite(c) for c in q):
                 r, p, y = (math.degrees(a) for a in quaternion_to_euler(*q))
-                self.traces["attitude"].append((t, r, p, y))
+                self.traces["attitude"].append((t, r, p, y, clock))
                 self.latest["attitude"] = (t, (r, p, y))
         for item, keys in _VECTOR_ITEMS:
             v = d.get(item)
@@ -302,7 +303,7 @@ class Analyzer:
                 f["finite"].add(all(math.isfinite(x) for x in vals), lambda: f"t={t:.3f}: {item} {vals}")
                 self.latest[item] = (t, vals)
                 if item == "velocity":
-                    self.traces["velocity"].append((t, *vals))
+                    self.traces["velocity"].append((t, *vals, clock))
         pos = d.get("position")
         if pos is not None:
             vals = [_float(pos["latitude"]), _float(pos["longitude"]), _float(pos["altitude"]), _float(pos["height"])]
@@ -310,7 +311,7 @@ class Analyzer:
             health = pos["gps_health"]
             f["gps_health"].add(0 <= health <= 5, lambda: f"t={t:.3f}: gps_health {health}")
             self.latest["position"] = (t, vals)
-            self.traces["position"].append((t, *vals))
+            self.traces["position"].append((t, *vals, clock))
         battery = d.get("battery")
         if battery is not None:
             f["battery"].add(0 <= battery <= 100, lambda: f"t={t:.3f}: battery {battery}%")
@@ -374,14 +375,33 @@ class Analyzer:
 
     # ---- measurements --------------------------------------------------------
 
+    def fc_clock_trusted(self) -> bool:
+        """Whether the flight controller's time stamp clock keeps the host's
+        time within CLOCK_AGREEMENT, over every stamp so far. A busy host
+        only ever delays an arrival, so the least arrival-minus-stamp in the
+        first and in the last third of the stamps is where a frame came
+        without delay: the slope between those two is the clock's error,
+        whatever bursts of late frames lie in between. A clock that counts in
+        the wrong unit, or an FC that stamps at random, is not trusted."""
+        with self.lock:
+            stamps = [(t, c) for t, _, c in self.fc_stamps if c is not None]
+        if len(stamps) < 6 or stamps[-1][1] - stamps[0][1] < CLOCK_MIN_SPAN:
+            return False
+        third = len(stamps) // 3
+        early = min(stamps[:third], key=lambda s: s[0] - s[1])
+        late = min(stamps[-third:], key=lambda s: s[0] - s[1])
+        fc = late[1] - early[1]
+        return fc > 0 and abs((late[0] - early[0]) - fc) <= CLOCK_AGREEMENT * fc
+
     def measure_rates(self, rates: dict[str, int], t0: float, t1: float) -> dict[str, dict]:
         """Per item: expected Hz, frames carrying it that arrived in [t0, t1],
         measured Hz: (frames - 1) / the time from the first to the last, on
         the flight controller's time stamp clock when every one of those
-        frames has it and its span agrees with the arrival span within
-        CLOCK_AGREEMENT (a host that was not scheduled for a moment reads a
-        burst of late frames: on the arrival clock the rate looks higher),
-        else on the arrival clock."""
+        frames has it and that clock keeps the host's time over the run
+        (fc_clock_trusted): a host that was not scheduled for a moment reads
+        a burst of late frames, which on the arrival clock look like a
+        higher rate, then a lower one. Else on the arrival clock."""
+        trusted = self.fc_clock_trusted()
         out = {}
         for item in self.prof.flag_bits:
             pairs = [(t, c) for t, c in zip(self.item_times[item], self.item_clock[item]) if t0 <= t <= t1]
@@ -389,12 +409,21 @@ class Analyzer:
             if n >= 3:
                 span = pairs[-1][0] - pairs[0][0]
                 fc = pairs[-1][1] - pairs[0][1] if all(c is not None for _, c in pairs) else None
-                if fc is not None and fc > 0 and abs(fc - span) <= CLOCK_AGREEMENT * span:
+                if trusted and fc is not None and fc > 0:
                     span, clock = fc, "flight controller time stamp"
                 measured = (n - 1) / span if span > 0 else None
             out[item] = {"expected_hz": rates.get(item, 0), "frames": n,
                          "measured_hz": None if measured is None else round(measured, 2), "clock": clock}
         return out
+
+    def sample_span(self, samples: Sequence[tuple]) -> float:
+        """Seconds from the first to the last of trace samples (their FC clock
+        last): on the flight controller's clock when both have it and it is
+        trusted, else on the arrival clock."""
+        first, last = samples[0], samples[-1]
+        if first[-1] is not None and last[-1] is not None and self.fc_clock_trusted():
+            return last[-1] - first[-1]
+        return last[0] - first[0]
 
     def forget_before(self, t: float) -> int:
         """Drop what arrived before `t` from the time series (a session of
