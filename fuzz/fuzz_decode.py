@@ -34,11 +34,10 @@ for extra in (HERE.parent / "tools", HERE.parent / "conformance" / "testees"):
 
 # Instrument only the project's code: coverage inside construct and the
 # kaitaistruct runtime would slow every run and mostly measure the libraries.
-with atheris.instrument_imports(include=["osdk_conformance", "osdk_construct", "osdk_kaitai",
-                                         "kaitai_python_testee", "fuzz_corpus"]):
+with atheris.instrument_imports(include=["osdk_conformance", "kaitai_python_testee", "fuzz_corpus"]):
     import kaitai_python_testee as kaitai
-    import osdk_construct.frame  # noqa: F401 - decode.Decoder imports it lazily; instrument it now
-    import osdk_construct.payload  # noqa: F401
+    import osdk_conformance._construct.frame  # noqa: F401 - decode.Decoder imports it lazily; instrument it now
+    import osdk_conformance._construct.payload  # noqa: F401
     from fuzz_corpus import stream_reads
     from osdk_conformance.core import model
     from osdk_conformance.reference.decode import decode_events, received_bytes

@@ -54,7 +54,7 @@ from osdk_conformance.reference import codec, values
 from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, stream_events
 from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
-from osdk_construct import F32, F64, encode_movement_control as _encode_movement_value, osdk_payload
+from osdk_conformance._construct import F32, F64, encode_movement_control as _encode_movement_value, osdk_payload
 
 __all__ = [
     # errors and types

@@ -22,9 +22,9 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from kaitaistruct import BytesIO, KaitaiStream
-from osdk_construct.frame import build_frame
-from osdk_kaitai.osdk_frame import OsdkFrame
-from osdk_kaitai.osdk_payload import OsdkPayload
+from osdk_conformance._construct.frame import build_frame
+from osdk_conformance._kaitai.osdk_frame import OsdkFrame
+from osdk_conformance._kaitai.osdk_payload import OsdkPayload
 
 from osdk_conformance.core import model
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal

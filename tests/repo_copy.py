@@ -20,8 +20,8 @@ from osdk_conformance.core.paths import ROOT, SEED_ENV
 
 PACKAGES = {  # importable name -> its directory in the repository (pyproject.toml package-dir)
     "osdk_conformance": "osdk_conformance",
-    "osdk_construct": "spec/construct",
-    "osdk_kaitai": "generated/python/osdk_kaitai",
+    "osdk_conformance._construct": "spec/construct",
+    "osdk_conformance._kaitai": "generated/python/osdk_kaitai",
 }
 
 
@@ -33,16 +33,20 @@ def checkout_files() -> list[str]:
     return sorted({f for f in out.split("\0") if f and (ROOT / f).is_file()})
 
 
-def make_copy(repo: Path, shim: Path) -> dict[str, str]:
+def make_copy(repo: Path) -> dict[str, str]:
     """Copy the checkout to `repo`; return the environment that runs the copy."""
     for name in checkout_files():
         (repo / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(ROOT / name, repo / name, follow_symlinks=False)
     (repo / "tools/ksc/node_modules").symlink_to(ROOT / "tools/ksc/node_modules")
-    # osdk_construct lives in spec/construct: a link of that name puts the
-    # copy's package on the path ahead of the venv's editable install
-    (shim / "osdk_construct").symlink_to(repo / "spec/construct")
+    # The subpackages that live elsewhere in the repository (spec/construct,
+    # generated/python/osdk_kaitai) reach the copy's osdk_conformance through
+    # links: the venv's editable install would give this checkout's instead.
+    for name, directory in PACKAGES.items():
+        if name.startswith("osdk_conformance."):
+            (repo / name.replace(".", "/")).symlink_to(repo / directory)
     env = {k: v for k, v in os.environ.items() if k != SEED_ENV}
-    env["PYTHONPATH"] = os.pathsep.join([str(repo), str(repo / "generated/python"), str(shim)])
+    # generated/python: the library osdk_kaitai, importable as its users import it
+    env["PYTHONPATH"] = os.pathsep.join([str(repo), str(repo / "generated/python")])
     env["PYTHONDONTWRITEBYTECODE"] = "1"
     return env

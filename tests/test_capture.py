@@ -20,7 +20,7 @@ from osdk_conformance.reference.decode import received_bytes
 from osdk_conformance.core.deframe import split_chunks
 from osdk_conformance.sim.simulator import spawned
 from osdk_conformance.reference.worked_examples import BROADCAST, MOVEMENT
-from osdk_construct import build_frame
+from osdk_conformance._construct import build_frame
 
 
 def blocks(data: bytes):

@@ -8,7 +8,7 @@ import sys
 import pytest
 
 from osdk_conformance.reference.worked_examples import BROADCAST, MOVEMENT, WORKED_FRAMES, lookup
-from osdk_construct import build_frame
+from osdk_conformance._construct import build_frame
 
 
 def osdkc(*args: str, stdin: bytes | None = None) -> subprocess.CompletedProcess:
@@ -133,7 +133,7 @@ def test_kit_worked_frames_pass_through_every_bundled_implementation():
 
 def test_ack_codes_show_in_hex_with_the_spec_name():
     from osdk_conformance.core.commands import ack_code_text
-    from osdk_construct.payload import payload
+    from osdk_conformance._construct.payload import payload
 
     ack = lambda cmd_set, cmd_id, value: payload(cmd_set, cmd_id, True, "a3-fw3.1").parse(value).body.ack_code
     assert ack_code_text(ack(0, 0, bytes.fromhex("01ff") + bytes(47))) == "0xFF01 not_activated"  # 49 bytes: FW 3.1 layout (E30)

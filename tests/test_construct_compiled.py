@@ -21,8 +21,8 @@ from hypothesis import strategies as st
 from osdk_conformance.core import model
 from osdk_conformance.core.deframe import Frame, deframe
 from osdk_conformance.core.rules import profile_names
-from osdk_construct import build_frame, compiled, osdk_frame, osdk_payload
-from osdk_construct.payload import broadcast as broadcast_value
+from osdk_conformance._construct import build_frame, compiled, osdk_frame, osdk_payload
+from osdk_conformance._construct.payload import broadcast as broadcast_value
 
 VECTORS = Path(__file__).resolve().parent.parent / "vectors"
 PROFILES = profile_names()

@@ -14,12 +14,12 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-import osdk_construct as oc
+from osdk_conformance import _construct as oc
 from osdk_conformance.core import ksy
 from osdk_conformance.core.rules import default_rules
-from osdk_construct import broadcast, broadcast_items, enums, payload
-from osdk_construct.floats import F32, F64, F32le, F64le
-from osdk_construct.frame import header
+from osdk_conformance._construct import broadcast, broadcast_items, enums, payload
+from osdk_conformance._construct.floats import F32, F64, F32le, F64le
+from osdk_conformance._construct.frame import header
 
 MOVEMENT_FRAME = bytes.fromhex("aa230000000000003412e17201034b0000803f000000c00000003f0000f041fcdb01ba")
 BROADCAST_FRAME = bytes.fromhex("aa1600000000000007001ede02000018035769c676b2")

@@ -21,7 +21,7 @@ from osdk_conformance.core.capture import CaptureWriter
 from osdk_conformance.reference import values
 from osdk_conformance.reference.decode import profiles_decoding
 from osdk_conformance.reference.worked_examples import BROADCAST
-from osdk_construct import build_frame
+from osdk_conformance._construct import build_frame
 
 FRAME = bytes.fromhex(BROADCAST.hex)   # 22 bytes, a3-fw3.1
 # A 21-byte broadcast with 0xAA at offsets 8 (its SEQ) and 16 (the battery):

@@ -7,7 +7,7 @@ from hypothesis import given, strategies as st
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import Frame, Garbage, Rejected, deframe, header_fields
 from osdk_conformance.reference.worked_examples import BROADCAST, MOVEMENT
-from osdk_construct import build_frame
+from osdk_conformance._construct import build_frame
 
 MOVE = bytes.fromhex(MOVEMENT.hex)
 BCAST = bytes.fromhex(BROADCAST.hex)

@@ -17,7 +17,7 @@ import time
 import pytest
 
 from osdk_conformance.bench.reliability import FAULT_CASES
-from osdk_conformance.core.rules import profile_names
+from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.sim.simulator import spawned
 
 # Measures rates and timing of a live simulator: run alone, never beside
@@ -115,7 +115,12 @@ def test_every_profile_passes_passive_and_active_with_motion(runs, profile):
     assert "0x0003 obtain_in_progress then 0x0002 obtained" in checks["active.control_obtain"][1]
     assert "MOVES THE AIRCRAFT" in out
     page = (runs["tmp"] / f"{profile}.html").read_text()
-    assert page.count("<svg") == 4 and "Measured rate per item" in page
+    # rates, incidents, attitude, velocity, position: small multiples, one panel per series, and a
+    # panel for every broadcast item but those neither configured nor seen (listed instead)
+    assert page.count("<svg") == 5 and "Measured rate per item" in page
+    silent = re.search(r"Neither configured nor seen \(0 Hz throughout\): ([^.<]*)\.", page)
+    items = len(load_profile(profile).flag_bits) - (len(silent[1].split(", ")) if silent else 0)
+    assert page.count('<g class="panel" data-series=') == items + 4 + 3 + 3 + 3
     assert '<p class="verdict ok">PASS: ' in page and "CONFORM" not in page
     assert 'name="active.movement"' in (runs["tmp"] / f"{profile}.xml").read_text()
 

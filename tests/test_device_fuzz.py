@@ -40,7 +40,7 @@ from osdk_conformance.device.liveness import SYMPTOMS, LivenessOptions
 from osdk_conformance.device.port import Port
 from osdk_conformance.sim.bugs import RECEIVE_BUFFER
 from osdk_conformance.sim.simulator import SimConfig, Simulator, spawned
-from osdk_construct.control import encode_movement_control
+from osdk_conformance._construct.control import encode_movement_control
 
 PROFILE = "a3-fw3.1"
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "DEVICE-FUZZING.md"

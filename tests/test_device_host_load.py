@@ -93,3 +93,54 @@ def test_without_time_stamps_arrival_spread_is_judged_only_on_an_idle_host():
     idle = run_checks(steady(), arrivals, IDLE, items)["stream.jitter"]
     assert idle[0] == "fail" and "on an idle host" in idle[1]
     assert run_checks(steady(), steady(), BUSY, items)["stream.jitter"][0] == "pass"
+
+
+def test_a_reader_that_was_not_scheduled_withholds_the_timed_checks_only():
+    from osdk_conformance.device.hostload import HOST_TOO_BUSY, withheld
+    from osdk_conformance.device.verdict import INCONCLUSIVE, PASSED, acceptance_word, counts
+    from osdk_conformance.harness.report import FAIL, PASS, SKIP, Result
+
+    results = [Result("stream", "stream.sequence", FAIL, "2 SEQ gaps (148 frames missing)"),
+               Result("link", "link.crc", FAIL, "3 frames with a bad CRC"),
+               Result("stream", "stream.flags", PASS, "every flag word as configured")]
+    assert withheld(results, [], BUSY) == results
+    out = withheld(results, [(1000.0, 1.9), (1003.0, 0.6)], BUSY)
+    assert [r.status for r in out] == [SKIP, FAIL, PASS]
+    assert out[0].kind == HOST_TOO_BUSY
+    assert out[0].message.startswith("not judged: this host did not read the port for up to 1.9 s (2 time(s); "
+                                     "load average 4.20 on 2 cores")
+    assert out[0].message.endswith("Measured: 2 SEQ gaps (148 frames missing)")
+    only_timed = withheld(results[:1] + results[2:], [(1000.0, 1.9)], BUSY)
+    assert acceptance_word(True, None, any(r.kind == HOST_TOO_BUSY for r in only_timed)) == INCONCLUSIVE
+    assert acceptance_word(True, None, False) == PASSED
+    assert "1 skipped (host too busy: sequence)" in counts(only_timed)
+
+
+@pytest.mark.realtime
+def test_a_judge_stopped_by_its_host_is_inconclusive_not_a_failing_fc(tmp_path):
+    """The judge's process is stopped for 3 s (SIGSTOP, then SIGCONT: what a
+    saturated host does to it, only longer) while a healthy simulator goes on
+    sending: the pty fills, the frames after are lost on this host, and the
+    SEQ gap and the rates that follow are not the FC's. Before, the run
+    FAILED stream.sequence and stream.rates; now it is INCONCLUSIVE, exit 3,
+    and says why."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    from osdk_conformance.sim.simulator import spawned
+
+    with spawned("--profile", PROFILE, "--seed", "5") as (url, _):
+        proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "device", "--port", url, "--profile",
+                                 PROFILE, "--duration", "6", "--no-capture", "-q"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        time.sleep(2.5)   # started (about 0.5 s) and listening
+        os.kill(proc.pid, signal.SIGSTOP)
+        time.sleep(3.0)   # the pty holds about 1.6 s of this stream
+        os.kill(proc.pid, signal.SIGCONT)
+        out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 3, out + err
+    assert "osdkc device: INCONCLUSIVE: " in out and "host too busy" in out
+    assert "FAIL " not in out, out

@@ -37,7 +37,7 @@ REQUESTS = 1000
 
 def _ack_value(cmd_set: int, cmd_id: int) -> bytes:
     """The ACK of set frequency (the only command the device here answers)."""
-    from osdk_construct.payload import osdk_payload
+    from osdk_conformance._construct.payload import osdk_payload
 
     assert (cmd_set, cmd_id) == (0, 0x10)
     return osdk_payload(0, 0x10, True, PROFILE).build({"body": {"ack_code": "success"}})
@@ -179,8 +179,8 @@ def test_a_window_with_a_host_pause_is_measured_on_the_fc_clock_the_run_vouches_
 
 def test_a_time_stamp_clock_in_the_wrong_unit_is_not_trusted():
     an = Analyzer(PROFILE)
-    for k in range(300):   # stamps advance twice as fast as the frames come
-        an.feed_rx(1000.0 + k / 100, _broadcast(k, {"time_stamp": 100}, 2 * k / 100))
+    for k in range(300):   # an FC counting milliseconds in the 1/400 s field: 2.5 times too fast
+        an.feed_rx(1000.0 + k / 100, _broadcast(k, {"time_stamp": 100}, 2.5 * k / 100))
     assert not an.fc_clock_trusted()
     m = an.measure_rates({"time_stamp": 100}, 1000.0, 1003.0)["time_stamp"]
     assert m["clock"] == "arrival" and m["measured_hz"] == pytest.approx(100.0, abs=1)

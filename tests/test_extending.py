@@ -96,7 +96,7 @@ def edit_construct(path: Path) -> None:
 @pytest.fixture(scope="module")
 def extended(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]]:
     repo = tmp_path_factory.mktemp("extending") / "repo"
-    env = make_copy(repo, tmp_path_factory.mktemp("pythonpath"))
+    env = make_copy(repo)
     edit_rules(repo / "spec/rules.yaml")
     edit_ksy(repo / "spec/osdk_broadcast_items.ksy")
     edit_construct(repo / "spec/construct/broadcast_items.py")

@@ -15,8 +15,8 @@ import pytest
 from osdk_conformance.core import model
 from osdk_conformance.core.deframe import Frame
 from osdk_conformance.reference import decode, fastframe, values
-from osdk_construct import broadcast_for_profile, build_frame, parse_frame
-from osdk_construct.broadcast import FLAG_BITS, ITEMS, NAMES
+from osdk_conformance._construct import broadcast_for_profile, build_frame, parse_frame
+from osdk_conformance._construct.broadcast import FLAG_BITS, ITEMS, NAMES
 
 PROFILES = sorted(NAMES)
 REPEAT = decode._FastFrames.COMPILE_AFTER + 2  # the last uses of a layout take the compiled converter

@@ -41,12 +41,12 @@ from hypothesis import given, note
 from hypothesis import strategies as st
 from kaitaistruct import KaitaiStream, KaitaiStructError
 
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 from osdk_conformance.core import ksy, model
 from osdk_conformance.core.rules import profile as rules_profile, profile_names
-from osdk_construct.control import control_mode as c_control_mode
-from osdk_construct.control import movement_control as c_movement_control
-from osdk_construct.floats import F32, F64
+from osdk_conformance._construct.control import control_mode as c_control_mode
+from osdk_conformance._construct.control import movement_control as c_movement_control
+from osdk_conformance._construct.floats import F32, F64
 from osdk_kaitai.osdk_control_mode import OsdkControlMode
 from osdk_kaitai.osdk_frame import OsdkFrame
 from osdk_kaitai.osdk_movement_control import OsdkMovementControl

@@ -18,8 +18,8 @@ from library_examples import receive_expected, receive_stream, send_expected
 from osdk_conformance import api
 from osdk_conformance.core import crc
 from osdk_conformance.core.paths import ROOT
-from osdk_construct import F32
-from osdk_construct import payload as construct_payload
+from osdk_conformance._construct import F32
+from osdk_conformance._construct import payload as construct_payload
 
 EXAMPLES = ROOT / "examples" / "javascript"
 NODE = shutil.which("node")

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 import osdk_kaitai
 from osdk_conformance import api
 from osdk_conformance.core import crc

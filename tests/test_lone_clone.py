@@ -31,7 +31,7 @@ def lone(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]
     """The copy, and the environment to run it with."""
     base = tmp_path_factory.mktemp("lone")
     repo = base / "repo"
-    env = make_copy(repo, tmp_path_factory.mktemp("pythonpath"))
+    env = make_copy(repo)
     assert sorted(p.name for p in base.iterdir()) == ["repo"]  # nothing beside the clone
     return repo, env
 

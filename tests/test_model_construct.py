@@ -12,8 +12,8 @@ from osdk_conformance.bench.corpus import CORPORA, corpus
 from osdk_conformance.core import model
 from osdk_conformance.core.deframe import deframe
 from osdk_conformance.reference.decode import Decoder
-from osdk_construct import parse_frame
-from osdk_construct.floats import F32, F64
+from osdk_conformance._construct import parse_frame
+from osdk_conformance._construct.floats import F32, F64
 
 SECONDS = 60  # a minute of each corpus: every message type, fault and item rate
 

@@ -498,7 +498,7 @@ SNAN64 = (0x7FF0000000000001, 0xFFF4000000000000)
 def _snan_inputs():
     import struct
 
-    from osdk_construct import build_frame
+    from osdk_conformance._construct import build_frame
 
     mc = bytes([0x4B]) + struct.pack("<4I", SNAN32[0], SNAN32[1], 0x3F800000, SNAN32[2])
     # a3-fw3.1 broadcast: quaternion (f4 x4) and position (f8, f8, f4, f4, u1)
@@ -530,13 +530,14 @@ def test_kaitai_testee_restores_signalling_nan_bits(req):
 
 
 def test_kaitai_testee_does_not_use_construct():
-    """Its answers come from the Kaitai-generated parsers, never from osdk_construct."""
+    """Its answers come from the Kaitai-generated parsers, never from the Construct spec."""
     testee = ROOT / "conformance" / "testees" / "kaitai_python_testee.py"
     lines = "".join(json.dumps(r) + "\n" for r in [{"op": "capabilities"}, *_snan_inputs()])
     probe = (f"import sys, io, runpy\n"
              f"sys.stdin = io.StringIO({lines!r})\n"
              f"try:\n    runpy.run_path({str(testee)!r}, run_name='__main__')\nexcept SystemExit:\n    pass\n"
-             f"print(sorted(m for m in sys.modules if m.split('.')[0] in ('construct', 'osdk_construct')))\n")
+             f"print(sorted(m for m in sys.modules if m.split('.')[0] == 'construct' "
+             f"or m.startswith('osdk_conformance._construct')))\n")
     proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     out = proc.stdout.splitlines()

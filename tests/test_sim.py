@@ -17,8 +17,8 @@ from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.simulator import (PtyTransport, SimConfig, Simulator, Vehicle, euler_to_quaternion,
                                   quaternion_to_euler)
-from osdk_construct.control import encode_movement_control
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.control import encode_movement_control
+from osdk_conformance._construct.payload import osdk_payload
 
 # Measures rates and timing of a live simulator: run alone, never beside
 # CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).

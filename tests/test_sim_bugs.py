@@ -23,7 +23,7 @@ from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.bugs import BUGS, REBOOT_PAUSE_S
 from osdk_conformance.sim.simulator import PtyTransport, SimConfig, Simulator, add_arguments, spawned
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.payload import osdk_payload
 
 PROFILE = "a3-fw3.1"
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "ACCEPTANCE.md"

@@ -25,7 +25,7 @@ import yaml
 from osdk_conformance.core import ksy
 from osdk_conformance.core.rules import Rules, ksy_name, load_rules
 from osdk_conformance.traceability.trace import Resolver, _pointer
-from osdk_construct.payload import has_version_id, version_ack_value
+from osdk_conformance._construct.payload import has_version_id, version_ack_value
 
 ROOT = Path(__file__).resolve().parents[1]
 SPEC = ROOT / "spec"

@@ -53,8 +53,8 @@ from osdk_conformance.core.deframe import (HEADER_LEN, MAX_LEN, SOF, Frame, defr
 from osdk_conformance.reference.codec import PROFILES, answer
 from osdk_conformance.core.rules import profile as rules_profile
 from osdk_conformance.harness.vectors import VECTORS_DIR, difference, load_cases
-from osdk_construct import build_frame
-from osdk_construct.frame import CRC32_LEN
+from osdk_conformance._construct import build_frame
+from osdk_conformance._construct.frame import CRC32_LEN
 
 SEQ_OF_FRAME = (0, 0x7FFF)
 SEQ_OF_GARBAGE = (0x8000, 0xFFFF)

@@ -13,11 +13,11 @@ from construct import BitsInteger, Bytes, Const, Enum, Flag, Int8ul, Int16sl, In
 
 from osdk_conformance.core.rules import profile, profile_names
 from osdk_conformance.reference import values
-from osdk_construct.bitfields import lsb_first, record
-from osdk_construct.broadcast import for_profile
-from osdk_construct.combinators import Call, ExactSize, when
-from osdk_construct.enums import CONTROL_DEVICE
-from osdk_construct.floats import F32, F64, F32le, F64le
+from osdk_conformance._construct.bitfields import lsb_first, record
+from osdk_conformance._construct.broadcast import for_profile
+from osdk_conformance._construct.combinators import Call, ExactSize, when
+from osdk_conformance._construct.enums import CONTROL_DEVICE
+from osdk_conformance._construct.floats import F32, F64, F32le, F64le
 
 PROFILES = profile_names()
 MARKER = {"int": 1, "float": 1.5, "flag": True, "enum": 1}   # non-zero in every field of that kind

@@ -16,7 +16,7 @@ from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.simulator import VERSION_CRC, SimConfig, Simulator
 from osdk_conformance.sim.simulator import VERSION_ID as SIM_ID
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.payload import osdk_payload
 
 KEY = bytes(range(32))
 VERSION_ID = SIM_ID.ljust(vr.ID_SIZE, b"\0")

@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -63,6 +65,20 @@ def installed(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> tuple[Pa
 def osdkc(installed, *argv: str, timeout: float = 600) -> subprocess.CompletedProcess[str]:
     exe, env, work = installed
     return run([exe, *argv], cwd=work, env=env, timeout=timeout)
+
+
+def test_the_wheel_installs_only_the_kit_package(wheel: Path) -> None:
+    # Anything else at the top of site-packages would be another distribution's
+    # to overwrite or remove: osdk_kaitai is the name of the generated library.
+    with zipfile.ZipFile(wheel) as whl:
+        names = whl.namelist()
+        info = next(n.split("/")[0] for n in names if n.split("/")[0].endswith(".dist-info"))
+        assert {n.split("/")[0] for n in names} == {"osdk_conformance", info}
+        assert whl.read(f"{info}/top_level.txt").decode().split() == ["osdk_conformance"]
+        # the kit's Kaitai parsers are generated/python's files under the kit's name, not a copy of their own
+        source = ROOT / "generated/python/osdk_kaitai"
+        carried = {n.rsplit("/", 1)[1]: whl.read(n) for n in names if n.startswith("osdk_conformance/_kaitai/")}
+        assert carried == {p.name: p.read_bytes() for p in source.glob("*.py")}
 
 
 def test_it_runs_from_the_installed_package(installed) -> None:
@@ -119,6 +135,26 @@ def test_vectors_check_and_coverage(installed) -> None:
 @pytest.mark.parametrize("impl", ["construct", "kaitai-python"])
 def test_run_a_bundled_python_implementation(installed, impl: str) -> None:
     out = ok(osdkc(installed, "run", "--impl", impl, "--profile", "a3-fw3.1", "--filter", "worked",
+                   "--quiet"))
+    assert "CONFORMS" in out
+
+
+def test_installing_and_removing_the_generated_library_leaves_the_kit_alone(installed, tmp_path: Path) -> None:
+    exe, env, work = installed
+    python, pip = exe.parent / "python", [exe.parent / "pip", "--disable-pip-version-check", "--quiet"]
+    src = tmp_path / "osdk-kaitai"  # a copy: building writes into the source tree
+    shutil.copytree(ROOT / "generated/python", src, ignore=shutil.ignore_patterns("__pycache__", "build"))
+    # pip's own cache, as the fixture's install had: the build backend comes from there
+    pip_env = {k: v for k, v in env.items() if k != "XDG_CACHE_HOME"}
+    ok(run([*pip, "install", "--no-deps", src], cwd=work, env=pip_env))
+    where = ok(run([python, "-c", "import osdk_kaitai, osdk_conformance._kaitai as k; "
+                                  "print(osdk_kaitai.__file__); print(k.__file__)"], cwd=work, env=env)).split()
+    assert Path(where[0]).parent.name == "osdk_kaitai" and Path(where[1]).parent.name == "_kaitai"
+    ok(run([*pip, "uninstall", "--yes", "osdk-kaitai"], cwd=work, env=pip_env))
+    gone = run([python, "-c", "import osdk_kaitai"], cwd=work, env=env)
+    assert gone.returncode == 1 and "No module named 'osdk_kaitai'" in gone.stderr
+    ok(run([python, "-c", "import osdk_conformance.api"], cwd=work, env=env))
+    out = ok(osdkc(installed, "run", "--impl", "kaitai-python", "--profile", "a3-fw3.1", "--filter", "worked",
                    "--quiet"))
     assert "CONFORMS" in out
 

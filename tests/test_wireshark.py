@@ -19,7 +19,7 @@ from typing import Any
 import pytest
 import serial
 
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 from osdk_conformance import api
 from osdk_conformance.bench.corpus import corpus
 from osdk_conformance.cli import main as osdkc

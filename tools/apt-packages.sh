@@ -1,18 +1,24 @@
 #!/bin/sh
 # System packages the test suite needs beyond the language toolchains the
 # machine has: clang with its sanitizer and libFuzzer runtimes, for the C
-# decoder's sanitizer tests and fuzz smoke runs, and tshark, which dissects
-# captures with the generated Wireshark dissector (tests/test_wireshark.py).
+# decoder's sanitizer tests and fuzz smoke runs, tshark, which dissects
+# captures with the generated Wireshark dissector (tests/test_wireshark.py),
+# and chromium, which renders the HTML reports headless to check what a
+# reader sees (tests/test_report_pages.py).
 # Pinned to Debian 12's versions; each is skipped when it is already there.
 set -eu
 CLANG="clang-14=1:14.0.6-12 libclang-rt-14-dev=1:14.0.6-12"
 TSHARK="tshark=4.0.17-0+deb12u3"
+CHROMIUM="chromium=156.0.8078.108-1~deb12u1"
 PACKAGES=""
 if ! command -v clang-14 >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ]; then
     PACKAGES="$CLANG"
 fi
 if ! command -v tshark >/dev/null 2>&1; then
     PACKAGES="$PACKAGES $TSHARK"
+fi
+if ! command -v chromium >/dev/null 2>&1; then
+    PACKAGES="$PACKAGES $CHROMIUM"
 fi
 if [ -z "${PACKAGES# }" ]; then
     exit 0

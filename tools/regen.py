@@ -10,7 +10,7 @@ files and the marked parts of osdk_payload.ksy), so the compiler always
 sees the profiles the rules define; --check reports them when they are stale.
 
 Targets and where they go, relative to generated/:
-  python      python/                  Kaitai, package osdk_kaitai, + glue and pyproject.toml
+  python      python/                  Kaitai, package osdk_kaitai (relative imports), + glue and pyproject.toml
   javascript  javascript/              Kaitai, CommonJS/UMD modules, + glue and package.json
   java        java/                    Kaitai, package osdk_kaitai, + glue and pom.xml
   go          go/                      Kaitai, package osdk_kaitai, + glue, go.mod and go.sum
@@ -78,7 +78,10 @@ def _libgen(lang: str, out: Path) -> None:
 
 def gen_python(out: Path) -> None:
     (out / "osdk_kaitai").mkdir()
-    _ksc("python", out / "osdk_kaitai", "--python-package", "osdk_kaitai")
+    # Relative imports: the osdk-conformance wheel installs these same files as
+    # osdk_conformance._kaitai (pyproject.toml), so that installing or removing
+    # the osdk-kaitai distribution never touches the package the kit runs.
+    _ksc("python", out / "osdk_kaitai", "--python-package", ".")
     _libgen("python", out)
 
 

@@ -7,7 +7,9 @@ protocol of conformance/PROTOCOL.md.
 
 Every layout, field, enum and `valid` check comes from the generated
 parsers, and the receiving and sending from the library generated around
-them (generated/python, the package osdk_kaitai): its Deframer finds the
+them (generated/python, the package osdk_kaitai, imported here as the kit's
+osdk_conformance._kaitai: the same files, which an osdk-kaitai installed or
+removed beside the kit leaves as they are): its Deframer finds the
 frames in decode_stream, its decode_frame / decode_payload apply the rule
 order of conformance/PROTOCOL.md and raise OsdkError with the error class,
 and its encoders answer encode_movement_control (float arguments as
@@ -53,13 +55,13 @@ from typing import Any, Iterable, Iterator, Sequence
 
 from kaitaistruct import KaitaiStream, KaitaiStruct
 
-import osdk_kaitai
+from osdk_conformance import _kaitai as osdk_kaitai
 from osdk_conformance.core import ksy, model
 from osdk_conformance.core.commands import command_name
 from osdk_conformance.core.rules import classify_control_mode, input_ranges, profile_names
 from osdk_conformance.harness.serve import serve
-from osdk_kaitai import Float32Bits, OsdkError, OsdkFrame
-from osdk_kaitai.osdk_control_mode import OsdkControlMode
+from osdk_conformance._kaitai import Float32Bits, OsdkError, OsdkFrame
+from osdk_conformance._kaitai.osdk_control_mode import OsdkControlMode
 
 NAME = "osdk-kaitai-python"
 PROFILES = profile_names()

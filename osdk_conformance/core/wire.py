@@ -16,7 +16,7 @@ from osdk_conformance.core.capture import TX
 from osdk_conformance.core.deframe import HEADER_LEN, header_fields
 from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.core.errors import UsageError
-from osdk_construct.frame import build_frame
+from osdk_conformance._construct.frame import build_frame
 
 BLOCK = 16
 

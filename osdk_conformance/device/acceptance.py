@@ -25,7 +25,7 @@ import time
 from pathlib import Path
 
 from osdk_conformance.core.capture import CaptureError, CaptureWriter, RX, default_capture_path, open_capture
-from osdk_conformance.core.errors import UsageError, cannot_read
+from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError, cannot_read
 from osdk_conformance.core.options import baud_rate, fraction, non_negative_float, positive_float, uint32
 from osdk_conformance.core.rules import RulesError, default_rules
 from osdk_conformance.core.wire import key_option
@@ -33,14 +33,15 @@ from osdk_conformance.device.active import (ActiveRun, Commander, EXIT_BY_SIGNAL
                                              to_the_end)
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.checks import Options, passive_results
-from osdk_conformance.device.hostload import HostClock
+from osdk_conformance.device.hostload import HOST_TOO_BUSY, HostClock, withheld
 from osdk_conformance.device.plots import checks_html, plots_html
 from osdk_conformance.device.port import Port
 from osdk_conformance.device.verdict import acceptance_word, counts
 from osdk_conformance.harness.report import ERROR, PASS, SKIP, Result, conforms, summary_table, write_html, write_junit
 
 EXIT_STATUS = ("exit status: 0 every check passed (PASS), 1 a check failed or errored (FAIL), 2 usage or port "
-               "error, or movement control not confirmed, 130 interrupted by SIGINT (also at the --allow-motion "
+               "error, or movement control not confirmed, 3 nothing failed but this host was too busy to read the "
+               "port in time for some checks, which were not judged (INCONCLUSIVE: run again on a quieter host), 130 interrupted by SIGINT (also at the --allow-motion "
                "question), 143 by SIGTERM (INTERRUPTED: an interrupted run releases control, restores the rates "
                "it changed and still writes its reports; a second SIGINT cuts that clean-up short)")
 
@@ -141,9 +142,9 @@ def confirm_motion(tool: str, plan: str, yes: bool, stdin=None, stderr=None) -> 
     if not interactive:
         raise UsageError("--allow-motion: standard input is not a terminal, so nobody can confirm that the aircraft "
                          "may move; add --yes to send movement control without asking (nothing was sent)")
-    stderr.write(f"{tool}: about to send {plan}\n{tool}: type yes to go on (anything else aborts): ")
-    stderr.flush()
-    try:
+    try:   # from the prompt on: a Ctrl-C that comes as soon as the question shows is an answer too
+        stderr.write(f"{tool}: about to send {plan}\n{tool}: type yes to go on (anything else aborts): ")
+        stderr.flush()
         answer = stdin.readline()
     except KeyboardInterrupt:
         stderr.write(f"\n{tool}: interrupted at the question: nothing was sent\n")
@@ -178,7 +179,7 @@ def write_reports(args, results: list[Result], an, meta: dict, verdict: tuple[st
         write_junit(args.junit, results, "osdkc device", meta)
     if args.html:
         write_html(args.html, results, f"OPEN protocol acceptance run: {meta.get('profile')}", meta,
-                   extra_html=checks_html(results) + plots_html(an), verdict=verdict)
+                   lead_html=plots_html(an), extra_html=checks_html(results), verdict=verdict, noun="check")
 
 
 def run_device(args: argparse.Namespace) -> int:
@@ -264,8 +265,10 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
         results.append(Result("run", "run.complete", ERROR, f"the run stopped on an internal error during phase "
                               f"{phase}: {error}; clean-up: {cleanup}", {"phase": phase, "clean-up": cleanup},
                               kind="exception"))
+    results = withheld(results, port.state.host_stalls, opts.host)
     ok = conforms(results)
-    word = acceptance_word(ok, signame)
+    host_busy = any(r.kind == HOST_TOO_BUSY for r in results)
+    word = acceptance_word(ok, signame, host_busy)
     how = f" by {signame} during phase {phase} after {ran_s:.1f} s, clean-up {cleanup}" if signame else ""
     line = f"{word}{how}: {counts(results)}"
     meta = {"profile": args.profile, "port": args.port, "baud": args.baud,
@@ -275,11 +278,11 @@ def _live(args, opts: Options, an, port: Port, cap, key, interrupts) -> int:
             "movement control": "allowed" if args.allow_motion else "not allowed",
             "interrupted": f"{signame} during phase {phase}" if signame else "no", "clean-up": cleanup}
     print_results(results, args.quiet)
-    write_reports(args, results, an, meta, (line, ok and not signame))
+    write_reports(args, results, an, meta, (line, ok and not signame and not host_busy))
     print(f"\nosdkc device: {line}; {'' if signame else f'{ran_s:.1f} s, '}{args.profile} on {args.port}")
     if signame:
         return EXIT_BY_SIGNAL.get(signame, 130)
-    return 0 if ok else 1
+    return (EXIT_INCONCLUSIVE if host_busy else 0) if ok else 1
 
 
 def _replay(args, an, opts: Options) -> int:

@@ -29,8 +29,8 @@ from osdk_conformance.device.checks import flags_check, rate_check
 from osdk_conformance.device.port import PortDown
 from osdk_conformance.core.version_reply import host_problem
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
-from osdk_construct.control import encode_movement_control
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.control import encode_movement_control
+from osdk_conformance._construct.payload import osdk_payload
 
 # Test hook: a comma-separated list of phase names at which the run announces
 # itself on stderr and waits HOLD_SECONDS, so a test can send a real signal

@@ -34,8 +34,9 @@ from osdk_conformance.sim.simulator import quaternion_to_euler
 HZ_OF_CODE = hz_of_code()
 CODE_OF_HZ = {v: k for k, v in HZ_OF_CODE.items()}
 MAX_EXAMPLES = 5
-CLOCK_AGREEMENT = 0.05   # a time stamp clock that runs off the host's by more is not trusted for rates
+CLOCK_AGREEMENT = 0.5    # a time stamp clock that runs off the host's by more is not trusted for rates
 CLOCK_MIN_SPAN = 0.5      # seconds of time stamps before the FC's clock can be compared with the host's
+MOVEMENT_GAP = 0.5        # s between movement commands that ends a run of them (the FC hovers after that long)
 
 
 @dataclass
@@ -136,6 +137,9 @@ class Analyzer:
         # commands sent and their ACKs
         self.sent: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
         self.acks: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        # movement control, sent in session 0 (no ACK) so not in `sent`: one entry per run of commands
+        # with one mode byte and kind of setpoint, [first t, mode byte, all setpoints zero, last t]
+        self.movement: list[list] = []
         self.on_broadcast: Callable[[float, Any], None] | None = None
 
     # ---- input -----------------------------------------------------------
@@ -161,6 +165,16 @@ class Analyzer:
                         old = self.sent.get(key)
                         if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
                             self.sent[key] = new
+                    if not op.is_ack and not op.problem and (op.cmd_set, op.cmd_id) == (1, 3) and op.value:
+                        self._movement(t, op.value)
+
+    def _movement(self, t: float, value: bytes) -> None:
+        mode, zero = value[0], not any(value[1:])
+        last = self.movement[-1] if self.movement else None
+        if last and last[1] == mode and last[2] == zero and t - last[3] <= MOVEMENT_GAP:
+            last[3] = t
+        else:
+            self.movement.append([t, mode, zero, t])
 
     def finish(self, t: float | None = None) -> None:
         with self.lock:
@@ -444,6 +458,7 @@ class Analyzer:
                 del trace[:bisect_left(trace, t, key=lambda s: s[0])]
             del self.rx_chunks[:bisect_left(self.rx_chunks, t, key=lambda c: c[0])]
             self.incidents = [i for i in self.incidents if i[0] >= t]
+            self.movement = [m for m in self.movement if m[3] >= t]
             for table in (self.sent, self.acks):
                 for key in [k for k, v in table.items() if v[0] < t]:
                     del table[key]

@@ -35,9 +35,9 @@ import struct
 from dataclasses import dataclass
 from typing import Iterator
 
-from osdk_construct.control import encode_movement_control
-from osdk_construct.enums import COMMAND_SET
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.control import encode_movement_control
+from osdk_conformance._construct.enums import COMMAND_SET
+from osdk_conformance._construct.payload import osdk_payload
 
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import HEADER_LEN, MAX_LEN, SOF, split_chunks

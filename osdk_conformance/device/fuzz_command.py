@@ -244,8 +244,8 @@ def _session(args, profile: str, seed: int, an, port, cap, sopts: SessionOptions
     if args.junit:
         write_junit(args.junit, results, "osdkc fuzz --port", meta)
     if args.html:
-        write_html(args.html, results, title, meta, verdict=(line, status == 0),
-                   extra_html=checks_html(results) + timeline_html(session.live, out))
+        write_html(args.html, results, title, meta, verdict=(line, status == 0), noun="check",
+                   lead_html=timeline_html(session.live, out), extra_html=checks_html(results))
     if args.allow_motion:
         print(f"osdkc fuzz: movement control {out.motion}", file=sys.stderr, flush=True)
     print(f"\nosdkc fuzz: {line}")

@@ -17,7 +17,7 @@ from pathlib import Path
 from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS
 from osdk_conformance.device.fuzz_session import Finding, SessionOutcome
-from osdk_conformance.device.plots import line_chart
+from osdk_conformance.device.plots import Marker, Panel, markers_html, small_multiples
 from osdk_conformance.harness.fuzz import regression_vector, suite_document
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
 
@@ -129,31 +129,41 @@ def write_findings(out: SessionOutcome, directory: Path, profile: str, seed: int
 
 
 def timeline_html(live, out: SessionOutcome) -> str:
-    """The liveness timeline, per second: broadcast frames, checks and failed
-    checks, the version query's round trip."""
+    """The liveness timeline as small multiples on one time axis: broadcast
+    frames, the version query's round trip, checks and failed checks, per
+    second; findings are numbered markers. Only whole seconds are drawn:
+    the session starts and ends inside a second, and a part of one counted
+    as a whole read as a rate falling off at both ends."""
     if not live.bins:
         return "<h2>Liveness timeline</h2><p>No check was made.</p>"
-    t0 = min(live.bins)
-    rows = sorted((s - t0, r) for s, r in live.bins.items())
-    rate = [(x, r[4]) for x, r in rows]
-    checks = [(x, r[0]) for x, r in rows]
-    failed = [(x, r[1]) for x, r in rows if r[1]]
-    rtt = [(x, r[2] / r[3]) for x, r in rows if r[3]]
+    with live.an.lock:
+        start, end = live.an.first_t, live.an.last_t
+    seconds = sorted(live.bins)
+    start = seconds[0] if start is None else start
+    end = seconds[-1] + 1 if end is None else end
+    whole = range(math.ceil(start), math.floor(end))   # seconds that lie wholly inside the session
+    t0 = start
+    rows = [(s + 0.5 - t0, live.bins.get(s, [0, 0, 0.0, 0, 0])) for s in whole]
+    panels = [Panel("broadcast", "frames per second", _steps([(x, r[4]) for x, r in rows]), floor=0.0),
+              Panel("round trip", "ms, mean of the second", _steps([(x, r[2] / r[3] if r[3] else math.nan)
+                                                                   for x, r in rows]), floor=0.0),
+              Panel("checks", "per second", _steps([(x, r[0]) for x, r in rows]), floor=0.0),
+              Panel("failed checks", "per second", _steps([(x, r[1]) for x, r in rows]), floor=0.0)]
+    marks = [Marker(f.check.t - t0, f"finding {f.number}: {f.check.describe()}", "finding") for f in out.findings]
     return "\n".join([
         "<h2>Liveness timeline</h2>",
         f"<p>{out.checks} checks; {len(out.findings)} finding(s); every case's bytes are in the capture with "
-        "its id as the block comment.</p>",
-        line_chart("Broadcast frames per second", {"broadcast": rate}, ylabel="Hz"),
-        line_chart("Version query round trip (mean per second)", {"round trip": rtt}, ylabel="ms"),
-        line_chart("Checks per second, and failed checks", {"checks": checks, "failed": _spikes(failed)},
-                   ylabel="per second"),
+        "its id as the block comment. Per whole second of the session (the partial first and last seconds "
+        "are left out).</p>",
+        markers_html(marks),
+        small_multiples("Liveness per second", panels, (start - t0, end - t0), marks,
+                        "t (s) from the first byte received"),
     ])
 
 
-def _spikes(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
-    """Points drawn as spikes from zero (a polyline through failed checks only would join them)."""
+def _steps(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """Each per-second value drawn across its second; a missing one lifts the pen."""
     out: list[tuple[float, float]] = []
     for x, y in points:
-        if math.isfinite(x):
-            out += [(x, 0.0), (x, y), (x, 0.0)]
+        out += [(x - 0.5, y), (x + 0.5, y)] if math.isfinite(y) else [(x, math.nan)]
     return out

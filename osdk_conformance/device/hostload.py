@@ -8,7 +8,17 @@ from __future__ import annotations
 
 import os
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from typing import Sequence
+
+from osdk_conformance.harness.report import FAIL, SKIP, Result
+
+# Checks whose verdict rests on every frame being read in time: a reader that
+# was not scheduled lets the host's buffers overflow, and the frames lost there
+# read as a flight controller that skipped SEQs, slowed down or stopped.
+HOST_TIMED = ("link.stall", "stream.rates", "stream.jitter", "stream.sequence", "active.frequency",
+              "active.frequency_restore", "active.movement")
+HOST_TOO_BUSY = "host too busy"
 
 
 @dataclass(frozen=True)
@@ -44,3 +54,18 @@ class HostClock:
         except OSError:   # no load average on this system: treat the host as busy, never blame the FC
             load1 = float("inf")
         return HostLoad(os.cpu_count() or 1, load1, time.process_time() - self.cpu0, time.monotonic() - self.wall0)
+
+
+def withheld(results: Sequence[Result], stalls: Sequence[tuple[float, float]], load: HostLoad | None) -> list[Result]:
+    """`results` with each failure of a HOST_TIMED check turned into a check
+    not judged (SKIP, kind HOST_TOO_BUSY) when the reader was not scheduled
+    for HOST_STALL_S or more during the run: what it measured may be this
+    host's doing, and the verdict must not blame the flight controller for it.
+    The message keeps what was measured."""
+    if not stalls:
+        return list(results)
+    longest = max(seconds for _, seconds in stalls)
+    why = (f"not judged: this host did not read the port for up to {longest:.1f} s ({len(stalls)} time(s)"
+           + (f"; {load.text()}" if load else "") + "); frames may have been lost on this host. Measured: ")
+    return [replace(r, status=SKIP, message=why + r.message, kind=HOST_TOO_BUSY)
+            if r.status == FAIL and r.id in HOST_TIMED else r for r in results]

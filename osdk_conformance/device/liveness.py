@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 
 from osdk_conformance.core.deframe import MAX_LEN
 from osdk_conformance.core.wire import encode
-from osdk_construct.payload import osdk_payload
+from osdk_conformance._construct.payload import osdk_payload
 
 SYMPTOMS = {
     "no_ack": "the version query was not answered",

@@ -14,11 +14,17 @@ from osdk_conformance.core.errors import UsageError, one_line
 
 
 
+# A reader loop that came round this much later than its read timeout was not
+# scheduled: bytes may have piled up, and been lost, in buffers on this host.
+HOST_STALL_S = 0.5
+
+
 @dataclass
 class LinkState:
     t_open: float = 0.0
     t_end: float = 0.0
     disconnects: list = field(default_factory=list)   # [t_lost, t_back or None, why]
+    host_stalls: list = field(default_factory=list)   # (t, seconds) the reader was not scheduled
 
 
 class PortDown(Exception):
@@ -61,13 +67,19 @@ class Port:
             self.thread.start()
 
     def _reader(self) -> None:
+        last = time.monotonic()
         while not self.stop.is_set():
+            now = time.monotonic()
+            if now - last > HOST_STALL_S:
+                self.state.host_stalls.append((time.time() - (now - last), now - last))
+            last = now
             ser = self.ser
             if ser is None:
                 try:
                     ser = self._open()
                 except Exception:
                     self.stop.wait(0.25)
+                    last = time.monotonic()   # a wait of its own, not a stall
                     continue
                 self.ser = ser
                 self.state.disconnects[-1][1] = time.time()

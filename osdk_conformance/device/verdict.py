@@ -2,8 +2,9 @@
 the HTML banner and in the JUnit properties.
 
 Conformance is what `osdkc run` judges (CONFORMS / DOES NOT CONFORM, only
-there). An acceptance run (`osdkc device`) PASSES or FAILS, or was
-INTERRUPTED; a fuzzing session (`osdkc fuzz --port`) FOUND n findings or
+there). An acceptance run (`osdkc device`) PASSES or FAILS, is
+INCONCLUSIVE (nothing failed, but this host was too busy to judge some
+checks: device/hostload.withheld), or was INTERRUPTED; a fuzzing session (`osdkc fuzz --port`) FOUND n findings or
 found NOTHING, or was INTERRUPTED (device/fuzz_command.py). Whatever the
 word, the summary line says how many checks ran, passed, failed and were
 skipped, and why the skipped ones were, in a few words (`counts`): a PASS
@@ -19,6 +20,7 @@ from typing import Sequence
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, XFAIL, XPASS, Result
 
 PASSED, FAILED, INTERRUPTED = "PASS", "FAIL", "INTERRUPTED"   # osdkc device
+INCONCLUSIVE = "INCONCLUSIVE"   # osdkc device: nothing failed, but this host kept checks from being judged
 FOUND, NOTHING_FOUND = "FOUND", "NOTHING FOUND"                # osdkc fuzz --port
 
 NAMES_PER_REASON = 3   # check names listed after a skip reason, then "…"
@@ -67,6 +69,13 @@ def counts(results: Sequence[Result]) -> str:
     return f"{text}, {len(skipped)} skipped ({'; '.join(groups)})"
 
 
-def acceptance_word(ok: bool, signame: str | None) -> str:
-    """PASS, FAIL or INTERRUPTED: the word of an `osdkc device` run."""
-    return INTERRUPTED if signame else PASSED if ok else FAILED
+def acceptance_word(ok: bool, signame: str | None, host_withheld: bool = False) -> str:
+    """PASS, FAIL, INCONCLUSIVE or INTERRUPTED: the word of an `osdkc device`
+    run. INCONCLUSIVE when nothing failed but a check was not judged because
+    this host was too busy to read the port in time: not a PASS, since the
+    check did not run, and not the device's failure."""
+    if signame:
+        return INTERRUPTED
+    if not ok:
+        return FAILED
+    return INCONCLUSIVE if host_withheld else PASSED

@@ -60,19 +60,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Sequence, TextIO
 
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
 from osdk_conformance.core.paths import CACHE
 from osdk_conformance.core.rules import default_rules, input_ranges, profile as rules_profile
-from osdk_conformance.harness.runner import ALL, BUNDLED_IMPLS, impl_argv, parse_capabilities
+from osdk_conformance.harness.runner import ALL, BUNDLED_IMPLS, impl_argv, parse_capabilities, start_error
 from osdk_conformance.harness.spec_rules import rule_flag
 from osdk_conformance.harness.testee import Testee, TesteeFailure, TesteeStartError, split_command
 from osdk_conformance.harness.vectors import Case, compare, project_result
 from osdk_conformance.reference.codec import PROFILES, answer
-from osdk_construct import payload as pl
-from osdk_construct.floats import F32
+from osdk_conformance._construct import payload as pl
+from osdk_conformance._construct.floats import F32
 
 FUZZ_OPS = ("decode_stream", "decode_frame", "decode_payload", "classify_control_mode", "check_movement_control")
 CATEGORY = "fuzz.regression"
@@ -514,9 +514,12 @@ def start_fuzzees(commands: Sequence[tuple[str | None, Sequence[str]]],
             f.testee = Testee(argv, timeout=timeout, max_restarts=1 << 30)
             f.testee.start()
             caps = parse_capabilities(f.testee.request({"op": "capabilities"}))
-        except (TesteeStartError, TesteeFailure, ValueError) as e:
+        except TesteeFailure as e:
             stop_fuzzees(out + [f])
-            raise UsageError(f"testee {label}: {e}") from None
+            raise UsageError(str(start_error(f.testee, e))) from None
+        except (TesteeStartError, ValueError) as e:
+            stop_fuzzees(out + [f])
+            raise UsageError(f"testee {f.label}: {e}") from None
         f.name = caps.name or f.label
         if label is None and caps.name:
             f.label = caps.name

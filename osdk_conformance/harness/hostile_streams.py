@@ -24,8 +24,8 @@ from __future__ import annotations
 import random
 from typing import Iterator
 
-from osdk_construct import build_frame
-from osdk_construct.frame import CRC32_LEN, HEADER_LEN, MAX_LEN
+from osdk_conformance._construct import build_frame
+from osdk_conformance._construct.frame import CRC32_LEN, HEADER_LEN, MAX_LEN
 
 BLOCK = 1 << 20
 KINDS = ("random", "max_len_headers", "truncated_headers", "max_len_frames")

@@ -38,15 +38,15 @@ import sys
 import time
 from dataclasses import dataclass
 from typing import Any, Callable
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 from osdk_conformance.core import crc, deframe, rules
 from osdk_conformance.core.crc import crc16, crc32
 from osdk_conformance.core.deframe import HEADER_LEN, Rejected, header_fields
 from osdk_conformance.core.rules import classify_control_mode
 from osdk_conformance.reference import accel, codec as reference, decode
 from osdk_conformance.reference.decode import Decoder
-from osdk_construct import broadcast as b, broadcast_items as items, floats, frame, payload
-from osdk_construct.enums import CONTROL_ACK, ENCRYPTION, enum_int
+from osdk_conformance._construct import broadcast as b, broadcast_items as items, floats, frame, payload
+from osdk_conformance._construct.enums import CONTROL_ACK, ENCRYPTION, enum_int
 
 NONE = "none"
 """The name mutant_testee.py accepts for "no fault" (the baseline run)."""

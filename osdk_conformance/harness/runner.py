@@ -23,7 +23,7 @@ claims more than ran (conformance/PROTOCOL.md, "Verdicts and coverage"):
   CONFORMS                       every available case ran and passed    exit 0
   CONFORMS for OPS: N of M cases some were skipped, all that ran passed exit 0
   DOES NOT CONFORM               a case failed, errored or xpassed      exit 1
-  (usage or I/O error)                                                  exit 2
+  (usage or I/O error, or a testee that did not start)                  exit 2
   INTERRUPTED                    SIGINT or SIGTERM; partial reports     exit 130 or 143
   NOTHING RAN                    no case ran at all: no verdict         exit 4
 
@@ -37,6 +37,7 @@ import argparse
 import json
 import os
 import re
+import shlex
 import signal
 import sys
 import threading
@@ -52,7 +53,7 @@ from osdk_conformance.core.paths import CHECKOUT, REPORTS, ROOT, needs_checkout
 from osdk_conformance.harness import report, response_schema, vectors
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, STATUSES, XFAIL, XPASS, Result
 from osdk_conformance.reference import accel
-from osdk_conformance.harness.testee import DEFAULT_MAX_RESTARTS, DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
+from osdk_conformance.harness.testee import DEFAULT_MAX_RESTARTS, DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, TESTEE_OOM, Testee, TesteeFailure, TesteeGaveUp, TesteeStartError, validate_response
 
 TESTEES = ROOT / "conformance" / "testees"
 
@@ -221,6 +222,17 @@ def _case_details(case: Any) -> dict[str, Any]:
     return d
 
 
+def compared_answers(r: Result) -> tuple[Any, Any] | None:
+    """For the HTML report: a failed case's expected answer and the testee's,
+    as compare() saw them, from the details _case_details and judge wrote
+    ("operation" reads "OP (PROFILE)"); None for a case without an answer."""
+    d = r.details
+    if "expected" not in d or not isinstance(d.get("expected"), dict) or "actual" not in d:
+        return None
+    operation = str(d.get("operation", "")).split(" ")[0]
+    return vectors.compared_answers(operation, str(d.get("expected result")), d["expected"], d["actual"])
+
+
 def _trailer(case: Any) -> dict[str, Any]:
     d: dict[str, Any] = {}
     if getattr(case, "comment", None):
@@ -350,10 +362,40 @@ def unclaimed(case: Any, caps: Capabilities) -> Result | None:
     return None
 
 
+# What a JVM writes (to standard output) when it cannot reserve its heap or
+# code cache under the address-space limit; it exits with status 1, which
+# alone says nothing of memory.
+_JVM_RESERVE = re.compile(r"Error occurred during initialization of VM|Could not reserve enough space"
+                          r"|insufficient memory for the Java Runtime")
+_STDERR_LINES = 3    # the end of a traceback: the failing line and the exception
+_STDERR_CHARS = 400
+
+
+def start_error(testee: Testee, f: TesteeFailure) -> TesteeStartError:
+    """The one-line error for a testee that gave no response to its first
+    request (it exited, hung or wrote something else): it did not start (a
+    missing module, a bad path, a VM that could not reserve its memory), and
+    nothing can be said of its conformance."""
+    lines = [line.strip() for line in f.stderr.splitlines() if line.strip()][-_STDERR_LINES:]
+    tail = " | ".join(lines)
+    if len(tail) > _STDERR_CHARS:
+        tail = "…" + tail[-_STDERR_CHARS:]
+    said = f"; its standard error ends: {tail}" if tail else "; it wrote nothing to standard error"
+    jvm = bool(_JVM_RESERVE.search(f.message) or _JVM_RESERVE.search(f.stderr))
+    hint = ""
+    if testee.memory_bytes and (f.kind == TESTEE_OOM or jvm):
+        hint = (f" (it runs with a limit of {testee.memory_bytes >> 20} MiB of address space"
+                + (", less than this JVM reserves at start" if jvm else "")
+                + ": try a larger --memory-mb, or 0 for no limit)")
+    return TesteeStartError(f"testee {shlex.join(testee.argv)} did not start: no response to its first request "
+                            f"(capabilities): {f.message}{hint}{said}")
+
+
 def ask_capabilities(testee: Testee) -> tuple[Capabilities | None, Result | None]:
     """The testee's capabilities, or the failed result saying why there are
     none; usable capabilities in a response that breaks its schema come with
-    a failed result of kind schema_violation (the run goes on)."""
+    a failed result of kind schema_violation (the run goes on). A testee
+    that has never given a response raises TesteeStartError (start_error)."""
     try:
         response = testee.request({"op": "capabilities"})
         caps = parse_capabilities(response)
@@ -361,11 +403,9 @@ def ask_capabilities(testee: Testee) -> tuple[Capabilities | None, Result | None
         return caps, (Result("capabilities", "capabilities", FAIL, f"schema violation at {problem}",
                              {"actual": response}, kind=response_schema.SCHEMA_VIOLATION) if problem else None)
     except TesteeFailure as f:
-        reason = f"the testee did not answer capabilities: {f}"
-        if f.kind != "testee_timeout" and testee.memory_bytes:
-            reason += (f" (it runs with a limit of {testee.memory_bytes >> 20} MiB of address space; runtimes such as "
-                       "the JVM reserve more than that at start: try a larger --memory-mb, or 0 for no limit)")
-        return None, Result("capabilities", "capabilities", FAIL, reason,
+        if not testee.answered:
+            raise start_error(testee, f) from None
+        return None, Result("capabilities", "capabilities", FAIL, f"the testee did not answer capabilities: {f}",
                             {"stderr": f.stderr} if f.stderr else {}, kind=f.kind)
     except ValueError as e:
         return None, Result("capabilities", "capabilities", FAIL, f"the capabilities answer is not usable: {e}",
@@ -597,9 +637,9 @@ def replay(argv: list[str], cases: Sequence[Any], compare, timeout: float, memor
         try:
             try:
                 testee.start()
+                outcome = run_cases(testee, cases, compare, progress)
             except TesteeStartError as e:
                 raise UsageError(str(e)) from None
-            outcome = run_cases(testee, cases, compare, progress)
         except Interrupted as i:  # before the first request (nothing ran) or just after the last
             outcome = outcome or RunOutcome([], None, None, 0.0, "", i.signame)
         finally:
@@ -682,7 +722,8 @@ def run_command(args: argparse.Namespace) -> int:
         if args.html:
             appendix = {"testee standard error (end)": outcome.testee_stderr} if outcome.testee_stderr else None
             report.write_html(args.html, results, f"OPEN protocol conformance: {name}", meta, appendix=appendix,
-                              extra_html=coverage_html(rows), verdict=(verdict.line, verdict.conforms))
+                              extra_html=coverage_html(rows), verdict=(verdict.line, verdict.conforms),
+                              diff=compared_answers)
         if args.summary_json:
             summary = {"impl": args.impl, "testee": name, "command": " ".join(testee_argv),
                        "cases": len(cases), "seconds": round(outcome.seconds, 1),
@@ -709,7 +750,9 @@ profile, and why the others were skipped) and one verdict line:
   NOTHING RAN: no verdict (...)          no case ran (nothing claimed, or all unsupported)
   INTERRUPTED by SIG...: no verdict      SIGINT/SIGTERM: partial reports written
 Exit status: 0 CONFORMS (all or some), 1 DOES NOT CONFORM, 2 usage or I/O
-error, 4 NOTHING RAN, 130 interrupted by SIGINT, 143 by SIGTERM.
+error, or a testee that did not start (no response to its first request: it
+exited, hung or wrote something else), 4 NOTHING RAN, 130 interrupted by
+SIGINT, 143 by SIGTERM.
 --vectors files are validated as `osdkc vectors check` does (schema,
 numberOfTests, ids unique across the files, known flags).
 See conformance/PROTOCOL.md, "Verdicts and coverage"."""

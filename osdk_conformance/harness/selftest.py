@@ -169,6 +169,9 @@ def run_mutant(name: str, cases: Sequence[Any], *, max_failures: int = DEFAULT_M
         running.testees[name], running.sources[name] = testee, source
     try:
         outcome = run_cases(testee, source, compare, source)  # type: ignore[arg-type]
+    except TesteeStartError as e:
+        run.problem = str(e)
+        return run
     finally:
         testee.close()
         with running.lock:

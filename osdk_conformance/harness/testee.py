@@ -38,7 +38,9 @@ request.
 When `max_restarts` restarts in a row (default 5) have not produced one
 successful response, the next request that needs a restart raises
 `TesteeGaveUp` instead. A testee that cannot be started at all raises
-`TesteeStartError`.
+`TesteeStartError`. One that starts but gives no response to its first
+request fails that request as above; `answered` tells the caller, and the
+runner then reports it as not started (runner.start_error).
 
 `close()` (also on garbage collection and at interpreter exit) closes the
 testee's input, gives it a moment to exit, then kills its process group.
@@ -217,6 +219,11 @@ class Testee:
     @property
     def running(self) -> bool:
         return self._proc is not None
+
+    @property
+    def answered(self) -> bool:
+        """Whether any request got a response since the testee was first started."""
+        return self._answered
 
     def start(self) -> None:
         if self._proc is not None:

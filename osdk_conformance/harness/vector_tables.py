@@ -31,7 +31,7 @@ from osdk_conformance.core.deframe import frame_length, header_problem
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.core.rules import classify_control_mode, input_ranges
 from osdk_conformance.reference.codec import AXIS_RANGE, _out_of_range, answer
-from osdk_construct import frame, payload
+from osdk_conformance._construct import frame, payload
 
 VALUE_MODEL = ROOT / "docs" / "VALUE-MODEL.md"
 

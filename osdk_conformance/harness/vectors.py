@@ -320,6 +320,44 @@ def compare(case: Case, response: Any) -> tuple[bool, str]:
     return True, ""
 
 
+def compared_answers(operation: str, result: str, expected: dict, response: Any) -> tuple[dict, dict] | None:
+    """The answer a case expects and the testee's, cut down to what compare()
+    looks at (`ok`, then `result` or `error`; for decode_stream the compared
+    fields of each event), for a report to show side by side. None when
+    the response is no response object (nothing to line up)."""
+    if not isinstance(response, dict) or not isinstance(response.get("ok"), bool):
+        return None
+    if response["ok"]:
+        got = {"ok": True, "result": response["result"]} if "result" in response else {"ok": True}
+    else:
+        got = {"ok": False, "error": response.get("error")}
+    if result == "invalid" or (result == "acceptable" and not response["ok"]):
+        return {"ok": False, "error": expected.get("error")}, got
+    want = expected.get("value") if result == "acceptable" else expected
+    if operation == "decode_stream" and isinstance(want, dict) and isinstance(got.get("result"), dict):
+        want, got["result"] = _compared_events(want, got["result"])
+    return {"ok": True, "result": want}, got
+
+
+def _compared_events(want: dict, got: dict) -> tuple[dict, dict]:
+    """Both streams' events with only the fields _stream_difference compares
+    (those of the expected event's kind at the same index, and a matched
+    ACK's fields); other keys of the result are not compared either."""
+    w, g = want.get("events"), got.get("events")
+    if not isinstance(w, list) or not isinstance(g, list):
+        return want, got
+
+    def cut(ev: Any, like: Any) -> Any:
+        if not isinstance(ev, dict):
+            return ev
+        kind = like.get("kind") if isinstance(like, dict) else ev.get("kind")
+        keys = COMPARED_EVENT_KEYS.get(kind, ("kind", "offset")) + MATCHED_ACK_KEYS
+        return {k: ev[k] for k in keys if k in ev}
+
+    return ({"events": [cut(e, e) for e in w]},
+            {"events": [cut(e, w[i] if i < len(w) else e) for i, e in enumerate(g)]})
+
+
 # ----------------------------------------------------------------- writing (for the generator)
 
 

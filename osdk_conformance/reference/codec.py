@@ -55,13 +55,13 @@ import construct
 # The control-mode rules and the frame encoder are called through their
 # modules, at call time, so that the selftest's mutants (harness/mutants.py),
 # which replace them there, reach the reference testee.
-import osdk_construct
+from osdk_conformance import _construct as osdk_construct
 from osdk_conformance.core import model, rules
 from osdk_conformance.core.crc import crc32
 from osdk_conformance.core.deframe import HEADER_LEN, frame_length, header_problem, split_chunks
 from osdk_conformance.core.errors import one_line
 from osdk_conformance.reference.decode import classify, decode_events
-from osdk_construct import F32, encode_movement_control, osdk_control_mode, osdk_payload, parse_frame
+from osdk_conformance._construct import F32, encode_movement_control, osdk_control_mode, osdk_payload, parse_frame
 
 PROFILES = rules.profile_names()
 OPERATIONS = (

@@ -39,10 +39,10 @@ from osdk_conformance.core.deframe import (HEADER_LEN, MAX_LEN, Deframer, Frame,
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.reference import accel, fastframe, values
 from osdk_conformance.core.rules import profile as load_profile, profile_names
-from osdk_construct.compiled import parse
-from osdk_construct.enums import profile_value
-from osdk_construct.frame import build_frame, osdk_frame, parse_frame
-from osdk_construct.payload import BODY_BY_KEY, broadcast, payload
+from osdk_conformance._construct.compiled import parse
+from osdk_conformance._construct.enums import profile_value
+from osdk_conformance._construct.frame import build_frame, osdk_frame, parse_frame
+from osdk_conformance._construct.payload import BODY_BY_KEY, broadcast, payload
 
 READ_SIZE = 64 * 1024
 

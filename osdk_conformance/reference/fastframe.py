@@ -30,8 +30,8 @@ import construct
 from construct import Container, evaluate
 
 from osdk_conformance.core import model
-from osdk_construct import bitfields
-from osdk_construct.combinators import Call
+from osdk_conformance._construct import bitfields
+from osdk_conformance._construct.combinators import Call
 
 __all__ = ["NotFast", "Short", "Specialized", "specialize", "key_function"]
 

@@ -27,11 +27,11 @@ from typing import Any
 import construct
 from construct import Container, evaluate
 
-from osdk_construct import bitfields
-from osdk_construct.broadcast import ITEMS, for_profile
-from osdk_construct.combinators import Call
-from osdk_construct.enums import profile_value
-from osdk_construct.floats import F32le
+from osdk_conformance._construct import bitfields
+from osdk_conformance._construct.broadcast import ITEMS, for_profile
+from osdk_conformance._construct.combinators import Call
+from osdk_conformance._construct.enums import profile_value
+from osdk_conformance._construct.floats import F32le
 
 __all__ = ["Leaf", "items", "layout", "fields", "rest", "fit", "cut", "broadcast_data"]
 

@@ -41,8 +41,8 @@ from osdk_conformance.core.rules import hz_of_code, profile as load_profile, pro
 from osdk_conformance.sdk.families import protocol
 from osdk_conformance.sdk.testee_build import detect as detect_family
 from osdk_conformance.sim.simulator import VERSION_ID, VERSION_NAME, spawned
-from osdk_construct.floats import IeeeFloat
-from osdk_construct.payload import has_version_id, osdk_payload
+from osdk_conformance._construct.floats import IeeeFloat
+from osdk_conformance._construct.payload import has_version_id, osdk_payload
 
 DRIVER_DIR = ROOT / "conformance" / "sdk_host"
 KEY_ENV = "OSDKC_HOST_TEST_KEY"

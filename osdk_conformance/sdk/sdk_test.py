@@ -39,9 +39,9 @@ from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import positive_float
 from osdk_conformance.harness import report, runner, vectors
 from osdk_conformance.harness.report import FAIL, Result
-from osdk_conformance.harness.runner import (EXIT_NOTHING_RAN, Progress, RunOutcome, coverage, coverage_html,
-                                             coverage_table, no_result_reason, request_of, select_cases,
-                                             verdict_of)
+from osdk_conformance.harness.runner import (EXIT_NOTHING_RAN, Progress, RunOutcome, compared_answers, coverage,
+                                             coverage_html, coverage_table, no_result_reason, request_of,
+                                             select_cases, verdict_of)
 from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, TESTEE_CRASH, TESTEE_OOM
 from osdk_conformance.sdk.family import Recipe
 from osdk_conformance.sdk.testee_build import Built, add_osdk_arguments, build, describe, recipe_of
@@ -308,9 +308,9 @@ def write_reports(run: VariantRun, recipe: Recipe, root: Path, args: argparse.Na
             report.write_html(variant_path(args.html, run.built.asan), run.results,
                               f"OPEN protocol conformance: {title}", meta,
                               appendix={"testee standard error (end)": stderr} if stderr else None,
-                              extra_html=_derivations_html(recipe) + _findings_html(run.findings)
-                              + coverage_html(run.rows),
-                              verdict=(run.verdict.line, run.verdict.conforms))
+                              lead_html=_findings_html(run.findings),
+                              extra_html=_derivations_html(recipe) + coverage_html(run.rows),
+                              verdict=(run.verdict.line, run.verdict.conforms), diff=compared_answers)
     except OSError as e:
         raise UsageError(f"cannot write a report: {e.strerror or e}") from None
 

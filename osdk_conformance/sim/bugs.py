@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import time
 
-from osdk_construct.enums import COMMAND_SET
+from osdk_conformance._construct.enums import COMMAND_SET
 
 from osdk_conformance.core.deframe import (HEADER_LEN, SOF, Event, Frame, Garbage, Rejected, frame_length,
                                            header_problem)

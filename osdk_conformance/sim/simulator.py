@@ -41,7 +41,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from osdk_construct.payload import VERSION_ID_SIZE, osdk_payload, version_ack_value
+from osdk_conformance._construct.payload import VERSION_ID_SIZE, osdk_payload, version_ack_value
 
 from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal
@@ -468,7 +468,8 @@ class Simulator:
         self.seq = 0
         self.outbuf = bytearray()
         self.stats = {"frames_sent": 0, "broadcast_frames": 0, "acks_sent": 0, "bytes_sent": 0,
-                      "frames_dropped_tx_full": 0, "commands_received": 0, "frames_rejected": 0,
+                      "frames_dropped_tx_full": 0, "broadcast_skipped_behind": 0, "commands_received": 0,
+                      "frames_rejected": 0,
                       "movement_commands": 0, "movement_commands_encrypted": 0, "restarts": 0,
                       "faults": {f: 0 for f in FAULTS},
                       # Every byte the host sent is accounted for: heard as part of a frame, or
@@ -877,6 +878,9 @@ class Simulator:
     def run(self) -> None:
         cfg = self.cfg
         period = 0.0
+        # the first frame is due when the loop starts, not when the simulator
+        # was built: a start-up slowed by a busy host is not a broadcast that fell behind
+        self.next_frame = self.send_at = max(self.send_at, time.monotonic())
         while self.running:
             now = time.monotonic()
             requested = self.restart_requests
@@ -916,9 +920,13 @@ class Simulator:
             if w:
                 self._flush()
             stalled = stalled or self._halted(now)   # a planted bug that triggered on what was just read
-            self.vehicle.step(now - self.last_step, now)
-            self.battery = max(0.0, self.battery - (now - self.last_step) / 60.0)
-            self.last_step = now
+            # the FC's state when the frame it owes was due, not when this late
+            # process got round to it: its values must match its time stamp
+            behind = self.broadcasting and not stalled and period and self.last_step < self.send_at < now
+            t_state = self.send_at if behind else now
+            self.vehicle.step(t_state - self.last_step, t_state)
+            self.battery = max(0.0, self.battery - (t_state - self.last_step) / 60.0)
+            self.last_step = max(self.last_step, t_state)
             if not self.broadcasting or stalled or not period:
                 self.next_frame = self.send_at = now
                 continue
@@ -928,6 +936,7 @@ class Simulator:
                 self.emit_broadcast(now, stamp=self.last_stamp)
                 self.next_frame += period
                 if self.next_frame < now - BEHIND_S:   # suspended, not merely starved: do not burst
+                    self.stats["broadcast_skipped_behind"] += round((now - self.next_frame) / period)
                     self.next_frame = now + period
                 jitter = self.rng.uniform(0, cfg.jitter_ms / 1000.0) if cfg.jitter_ms else 0.0
                 self.send_at = self.next_frame + jitter

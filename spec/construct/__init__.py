@@ -4,7 +4,9 @@ The .ksy files in spec/ are the source of truth for layout and names; this
 package transcribes them independently, with the same field names in the
 same order, so that the differential tests (tests/test_kaitai_vs_construct.py)
 can hold one against the other, and because Construct can also build: the
-conformance kit encodes frames with it.
+conformance kit encodes frames with it. It is a subpackage of the kit,
+imported as osdk_conformance._construct (pyproject.toml maps this directory
+there; it reads spec/rules.yaml through osdk_conformance.core).
 
 Modules, one per ksy file or concern:
   floats           F32/F64 (bit-exact IEEE values), F32le/F64le fields

@@ -48,7 +48,7 @@ def item_construct(profile: Profile, item: str) -> Construct:
         return _BARE[spec.type]
     layout = getattr(items, spec.type, None)
     if layout is None:
-        raise LookupError(f"osdk_construct.broadcast_items has no {spec.type!r} "
+        raise LookupError(f"spec/construct/broadcast_items.py has no {spec.type!r} "
                           f"(the type of rules.yaml broadcast_items.{item})")
     return layout(**profile.item_params[item]) if spec.params else layout
 

@@ -134,7 +134,7 @@ def osdk_frame(profile):
 
 
 frame = osdk_frame
-"""Short name within this module (osdk_construct.frame.frame)."""
+"""Short name within this module (osdk_conformance._construct.frame.frame)."""
 
 
 def parse_frame(data: bytes, profile):

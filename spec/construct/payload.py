@@ -133,4 +133,4 @@ def osdk_payload(cmd_set, cmd_id: int, is_ack: bool, profile):
 
 
 payload = osdk_payload
-"""Short name within this module (osdk_construct.payload.payload)."""
+"""Short name within this module (osdk_conformance._construct.payload.payload)."""

@@ -107,7 +107,8 @@ async function main() {
       let text = contents;
       if (opts.pythonPackage && opts.target === 'python') {
         // Generated modules import their siblings by bare name; inside a
-        // package they must import them relative to it.
+        // package they must import them through it (`--python-package .`:
+        // relative to it, so the package works under any name).
         text = text.replace(/^import ([a-z_][a-z0-9_]*)$/gm, (line, mod) =>
           (fs.existsSync(path.join(dir, `${mod}.ksy`)) ? `from ${opts.pythonPackage} import ${mod}` : line));
       }

@@ -6,7 +6,7 @@ from __future__ import annotations
 import struct
 from typing import Callable
 
-from osdk_construct.payload import VERSION_ID_SIZE, has_version_id
+from osdk_conformance._construct.payload import VERSION_ID_SIZE, has_version_id
 
 from osdk_conformance.harness import vector_tables as vt
 from osdk_conformance.harness import vectors

@@ -19,9 +19,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import construct
-from osdk_construct.bitfields import BitGroup
-from osdk_construct.broadcast import ITEMS
-from osdk_construct.floats import F32le, F64le
+from osdk_conformance._construct.bitfields import BitGroup
+from osdk_conformance._construct.broadcast import ITEMS
+from osdk_conformance._construct.floats import F32le, F64le
 
 from osdk_conformance.core.rules import profile as rules_profile
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import struct
 from typing import Any
 
-from osdk_construct.payload import VERSION_ID_SIZE, has_version_id
+from osdk_conformance._construct.payload import VERSION_ID_SIZE, has_version_id
 
 from osdk_conformance.core.rules import profile as rules_profile
 

@@ -3,7 +3,7 @@
 
 import kaitaistruct
 from kaitaistruct import KaitaiStruct, KaitaiStream, BytesIO
-from osdk_kaitai import osdk_broadcast_items
+from . import osdk_broadcast_items
 
 
 if getattr(kaitaistruct, 'API_VERSION', (0, 9)) < (0, 11):

@@ -3,7 +3,7 @@
 
 import kaitaistruct
 from kaitaistruct import KaitaiStruct, KaitaiStream, BytesIO
-from osdk_kaitai import osdk_payload
+from . import osdk_payload
 from enum import IntEnum
 
 

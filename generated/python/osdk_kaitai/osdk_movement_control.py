@@ -3,7 +3,7 @@
 
 import kaitaistruct
 from kaitaistruct import KaitaiStruct, KaitaiStream, BytesIO
-from osdk_kaitai import osdk_control_mode
+from . import osdk_control_mode
 
 
 if getattr(kaitaistruct, 'API_VERSION', (0, 9)) < (0, 11):

@@ -3,10 +3,10 @@
 
 import kaitaistruct
 from kaitaistruct import KaitaiStruct, KaitaiStream, BytesIO
-from osdk_kaitai import osdk_broadcast_m100_fw3_1
-from osdk_kaitai import osdk_broadcast_a3_fw3_1
-from osdk_kaitai import osdk_broadcast_m100_fw2_3
-from osdk_kaitai import osdk_movement_control
+from . import osdk_broadcast_m100_fw3_1
+from . import osdk_broadcast_a3_fw3_1
+from . import osdk_broadcast_m100_fw2_3
+from . import osdk_movement_control
 from enum import IntEnum
 
 
