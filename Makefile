@@ -23,7 +23,7 @@ LANGS  := javascript java go c
 
 setup: system-packages $(PY_OK) $(ACCEL_OK) $(JS_OK) testees examples
 
-# clang + sanitizer/libFuzzer runtimes, and tshark, from Debian, pinned (tools/apt-packages.sh).
+# clang + sanitizer/libFuzzer runtimes, tshark and Chromium (the report pages), from Debian, pinned (tools/apt-packages.sh).
 system-packages:
 	@sh tools/apt-packages.sh
 
