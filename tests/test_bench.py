@@ -169,6 +169,8 @@ def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     # runs the judge's busy host kept from a verdict blame nobody: not a false FAIL
     host_busy = {**full, "passed": 197, "inconclusive": 3}
     one_fail = {**full, "passed": 199, "false_fails": 1}
+    stand_in = {**full, "passed": 199, "stand_in_behind": 1}   # the simulated FC starved, the judge did not FAIL
+    stand_in_and_fail = {**stand_in, "false_fails": 1}
 
     def verdicts(h, busy=2):
         rel = {"healthy": h, "faults": faults, "load": {"busy_loops_per_core": busy}}
@@ -180,6 +182,8 @@ def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     assert verdicts(full, busy=0) == ["MISSED", "met"]   # an idle machine proves nothing about load
     assert verdicts(host_busy) == ["met", "met"]
     assert verdicts(one_fail) == ["MISSED", "met"]
+    assert verdicts(stand_in) == ["met", "met"]
+    assert verdicts(stand_in_and_fail) == ["MISSED", "met"]
 
 
 def test_device_fuzz_section_reports_each_baud_rate(tmp_path):

@@ -149,7 +149,9 @@ def _reliability_targets(rel: dict | None) -> list[dict]:
              if h["runs"] else "not measured",
              # no healthy run (--runs 0) measured nothing: not a miss. An inconclusive run blamed nobody;
              # the target is no false FAIL, and the inconclusive ones are in the line above for all to see
-             "met": (h["runs"] >= 200 and busy >= 2 and h["passed"] + h["inconclusive"] == h["runs"])
+             # and a run whose simulated FC was itself starved measures the stand-in, not the judge
+             "met": (h["runs"] >= 200 and busy >= 2 and h["false_fails"] == 0
+                     and h["passed"] + h["inconclusive"] + h.get("stand_in_behind", 0) == h["runs"])
              if h["runs"] else None},
             {"target": "each simulator fault kind detected in every one of ≥ 20 seeded runs, under the same load",
              "measured": (f"{len(faults)} kinds: detected in {sum(f['detected'] for f in faults.values())} of "
