@@ -85,6 +85,9 @@ from functools import cache
 
 import pytest
 
+# long streams through every implementation: `make quick` leaves it out
+pytestmark = pytest.mark.slow
+
 from osdk_conformance.harness import hostile_streams
 from osdk_conformance.core.deframe import MAX_LEN, deframe
 from osdk_conformance.core.paths import ROOT

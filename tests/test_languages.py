@@ -65,6 +65,7 @@ def test_c_decoder_never_allocates():
             assert fn not in text, f"{src.name} calls {fn[:-1]}"
 
 
+@pytest.mark.slow
 def test_sanitized_c_testee_conforms_over_every_vector(tmp_path):
     ok(make(C_DIR, "sanitize"))
     summary = tmp_path / "asan.json"

@@ -16,6 +16,9 @@ from pathlib import Path
 
 import pytest
 
+# a copy of the repository and its spec checks: `make quick` leaves it out
+pytestmark = pytest.mark.slow
+
 from osdk_conformance.core.paths import ROOT
 from repo_copy import PACKAGES, checkout_files, make_copy
 

@@ -42,6 +42,9 @@ from typing import Callable
 
 import pytest
 
+# every README snippet built and run in its language: `make quick` leaves it out
+pytestmark = pytest.mark.slow
+
 from osdk_conformance import api
 from osdk_conformance.core.capture import RX, TX, CaptureWriter
 

@@ -39,6 +39,9 @@ from pathlib import Path
 
 import pytest
 
+# every report kind rendered in headless Chromium: `make quick` leaves it out
+pytestmark = pytest.mark.slow
+
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.core.wire import encode
 from osdk_conformance.device.analysis import Analyzer

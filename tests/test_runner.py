@@ -66,6 +66,7 @@ def junit(path: Path) -> ET.Element:
 
 # ---- the bundled implementations conform ----------------------------------------
 
+@pytest.mark.slow
 def test_every_bundled_implementation_conforms(tmp_path):
     # One `--impl all` run: every language, each in its own process, with
     # empty failure lists (or reviewed ones in conformance/failure_lists/).

@@ -82,6 +82,7 @@ def rows(stdout: str) -> dict[str, list[str]]:
     return out
 
 
+@pytest.mark.slow
 def test_every_mutant_is_killed(selftest_run):
     proc = selftest_run
     assert proc.returncode == 0, proc.stdout[-6000:] + proc.stderr[-3000:]
@@ -93,6 +94,7 @@ def test_every_mutant_is_killed(selftest_run):
     assert all(cells[1] == "yes" for cells in table.values())
 
 
+@pytest.mark.slow
 def test_crash_and_hang_are_recorded_as_testee_failures(selftest_run):
     proc = selftest_run
     table = rows(proc.stdout)
@@ -101,12 +103,14 @@ def test_crash_and_hang_are_recorded_as_testee_failures(selftest_run):
     assert "note:" not in proc.stdout  # every misbehaving mutant died the way it should
 
 
+@pytest.mark.slow
 def test_the_truncation_vectors_kill_the_sdk_style_broadcast_copy(selftest_run):
     proc = selftest_run
     first = rows(proc.stdout)["broadcast_no_length_check"][3]
     assert re.search(r"(short_by_1|truncated|missing|flag_word|broadcast_short)", first), first
 
 
+@pytest.mark.slow
 def test_bug_class_mutants_fail_many_vectors(bug_class_run):
     assert bug_class_run.returncode == 0, bug_class_run.stdout[-4000:] + bug_class_run.stderr[-2000:]
     table = rows(bug_class_run.stdout)
