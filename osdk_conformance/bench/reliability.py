@@ -83,13 +83,6 @@ STAND_IN_BEHIND = ("the simulator itself fell more than {:g} s behind its schedu
                    "no healthy stand-in for a flight controller")
 
 
-def _stand_in_only(problems: list[str]) -> bool:
-    """The run went wrong only because the simulated FC itself was starved:
-    the judge's verdict on it is no measure of the judge."""
-    head = STAND_IN_BEHIND.split("{", 1)[0]
-    return bool(problems) and all(p.startswith(head) for p in problems)
-
-
 def _favour(pid: int) -> bool:
     try:
         os.setpriority(os.PRIO_PROCESS, pid, SIM_NICE)
@@ -162,6 +155,8 @@ def _healthy_verdict(r: dict) -> list[str]:
             bad.append(f"{n} command(s) retransmitted")
     else:
         bad.append("no capture")
+    # nothing went wrong but the simulated FC starving: the judge's verdict on it is no measure of the judge
+    r["stand_in_only"] = len(bad) == 1 and bool(st and st.get("broadcast_skipped_behind"))
     return bad
 
 
@@ -230,7 +225,7 @@ def _measure(runs: int, fault_runs: int, jobs: int, kinds: list[str] | None, bes
     out["simulator_nice"] = SIM_NICE if results and all(r["sim_favoured"] for r in results) else 0
     h["inconclusive"] = sum(1 for r in results if r["inconclusive"] and not r["problems"])
     h["passed"] = runs - len(problems) - h["inconclusive"]
-    h["stand_in_behind"] = sum(1 for p in problems if _stand_in_only(p["problems"]))
+    h["stand_in_behind"] = sum(1 for r in results if r.get("stand_in_only"))
     h["false_fails"] = sum(1 for r in results if any(st in ("FAIL", "ERROR") for st in r["checks"].values()))
     h["retransmissions"] = sum(r.get("retransmissions", 0) for r in results)
     h["failures"] = problems

@@ -38,7 +38,7 @@ import yaml
 
 from osdk_conformance.core import ksy
 from osdk_conformance.core.paths import ROOT, SPEC
-from osdk_conformance.core.schema_check import SchemaCheck, schema_problem
+from osdk_conformance.core.schema_check import SchemaCheck
 
 DEFAULT_RULES_PATH = SPEC / "rules.yaml"
 DEFAULT_SCHEMA_PATH = SPEC / "rules.schema.json"
@@ -175,10 +175,7 @@ class Profile:
 # YAML loading without silent duplicate keys
 
 
-_SafeLoader = ksy.SafeLoader
-
-
-class _StrictLoader(_SafeLoader):  # type: ignore[misc,valid-type]
+class _StrictLoader(ksy.SafeLoader):  # type: ignore[misc,valid-type]
     """SafeLoader that rejects a key written twice in one mapping."""
 
 
@@ -197,7 +194,7 @@ def _construct_mapping(loader: _StrictLoader, node: yaml.MappingNode, deep: bool
             continue  # unhashable keys are reported by the base constructor
         seen[key] = key_node
     loader.flatten_mapping(node)
-    return _SafeLoader.construct_mapping(loader, node, deep=deep)
+    return ksy.SafeLoader.construct_mapping(loader, node, deep=deep)
 
 
 _StrictLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
@@ -222,10 +219,11 @@ def _validator(schema_path: Path) -> SchemaCheck:
         raise RulesError(f"cannot read rules schema {_display(schema_path)}: {exc.strerror or exc}") from None
     except json.JSONDecodeError as exc:
         raise RulesError(f"rules schema {_display(schema_path)} is not valid JSON: {exc}") from None
-    problem = schema_problem(schema)
+    check = SchemaCheck(schema)
+    problem = check.schema_problem()
     if problem:
         raise RulesError(f"rules schema {_display(schema_path)} is not a valid draft 2020-12 schema: {problem}")
-    return SchemaCheck(schema)
+    return check
 
 
 def _resolve(path: str | Path | None, default: Path) -> Path:

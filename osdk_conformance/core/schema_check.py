@@ -19,31 +19,6 @@ import functools
 from typing import Any, Iterator, Sequence
 
 
-def schema_problem(schema: Any) -> str | None:
-    """Why `schema` is not a valid draft 2020-12 schema (jsonschema's
-    message), or None when it is. The compiled validator checks a schema
-    against the metaschema as it compiles it, in a fraction of the time
-    jsonschema's own check takes (a third of a second for
-    spec/rules.schema.json, paid by every process that loads the rules);
-    only a schema it refuses goes to jsonschema, whose message is the one
-    reported."""
-    import jsonschema_rs
-
-    try:
-        jsonschema_rs.Draft202012Validator(schema)
-        return None
-    except ValueError:
-        pass
-    from jsonschema import Draft202012Validator
-    from jsonschema.exceptions import SchemaError
-
-    try:
-        Draft202012Validator.check_schema(schema)
-    except SchemaError as exc:
-        return exc.message
-    return None
-
-
 class SchemaCheck:
     """A validator of one schema with jsonschema's `iter_errors` and
     `is_valid`, given the (uri, contents) of the schemas it refers to."""
@@ -59,6 +34,25 @@ class SchemaCheck:
                 else jsonschema_rs.Draft202012Validator(schema)
         except ValueError:
             self.fast = None  # a schema only jsonschema takes: it answers every question
+
+    def schema_problem(self) -> str | None:
+        """Why the schema is not a valid draft 2020-12 schema (jsonschema's
+        message), or None when it is. The compiled validator checked it
+        against the metaschema as it compiled it, in a fraction of the time
+        jsonschema's own check takes (a third of a second for
+        spec/rules.schema.json, paid by every process that loads the rules);
+        only a schema it refused goes to jsonschema, whose message is the one
+        reported."""
+        if self.fast is not None:
+            return None
+        from jsonschema import Draft202012Validator
+        from jsonschema.exceptions import SchemaError
+
+        try:
+            Draft202012Validator.check_schema(self.schema)
+        except SchemaError as exc:
+            return exc.message
+        return None
 
     @functools.cached_property
     def authority(self) -> Any:

@@ -55,7 +55,7 @@ from typing import Any, Iterable, Sequence
 from osdk_conformance.core.commands import ack_code_text
 from osdk_conformance.core.errors import UsageError, cannot_read
 from osdk_conformance.core.paths import ROOT, SPEC
-from osdk_conformance.core.schema_check import SchemaCheck, schema_problem
+from osdk_conformance.core.schema_check import SchemaCheck
 from osdk_conformance.harness.spec_rules import RULES
 from osdk_conformance.harness.vector_tables import tables
 from osdk_conformance.reference.codec import BadRequest, answer
@@ -424,10 +424,11 @@ class CheckReport:
 
 def _validator() -> SchemaCheck:
     schema = read_json(SCHEMA_PATH)
-    problem = schema_problem(schema)
+    check = SchemaCheck(schema)
+    problem = check.schema_problem()
     if problem:  # a broken schema is a problem of the kit, reported without a traceback
         raise VectorFileError(f"{SCHEMA_PATH} is not a valid JSON Schema: {problem}")
-    return SchemaCheck(schema)
+    return check
 
 
 def known_flags() -> tuple[set[str], set[str]]:

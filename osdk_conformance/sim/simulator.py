@@ -926,7 +926,7 @@ class Simulator:
             t_state = self.send_at if behind else now
             self.vehicle.step(t_state - self.last_step, t_state)
             self.battery = max(0.0, self.battery - (t_state - self.last_step) / 60.0)
-            self.last_step = max(self.last_step, t_state)
+            self.last_step = t_state
             if not self.broadcasting or stalled or not period:
                 self.next_frame = self.send_at = now
                 continue
