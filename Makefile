@@ -71,24 +71,25 @@ vectors: setup
 kit: setup
 	$(BIN)/osdkc kit
 
-# The whole suite; hypothesis runs its CI profile (10,000 examples per
-# message type in the differential test). pytest-xdist spreads the test
-# files over the cores (a file's tests stay together, so its module
-# fixtures run once); the `realtime` tests, which measure the rates of a
-# live simulator, run afterwards on their own.
+# The whole suite; hypothesis runs its CI profile (tests/conftest.py).
+# pytest-xdist spreads the test files over the cores (a file's tests stay
+# together, so its module fixtures run once); the `realtime` tests, which
+# judge a live simulator's timing, run afterwards with nothing CPU-heavy
+# beside them, two files at a time (they mostly wait on the serial link).
+# tests/test_vectors.py checks that vectors/ regenerates byte for byte.
 JOBS ?= auto
+REALTIME_JOBS ?= 2
 test: setup check-generated
-	$(BIN)/python tools/gen_vectors.py --check
 	$(BIN)/pytest -q -n $(JOBS) --dist loadfile -m 'not realtime'
-	$(BIN)/pytest -q -m realtime
+	$(BIN)/pytest -q -n $(REALTIME_JOBS) --dist loadfile -m realtime
 
 # A fast subset for development: no slow property tests, few examples.
 quick: setup
 	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow and not realtime' -n $(JOBS) --dist loadfile
-	$(BIN)/pytest -q -m 'realtime and not slow'
+	$(BIN)/pytest -q -n $(REALTIME_JOBS) --dist loadfile -m 'realtime and not slow'
 
 # The long property campaign: every hypothesis property of the suite with
-# 10,000 randomized examples each (the suite's own run is 1,000, fixed), the
+# 10,000 randomized examples each (the suite's own smoke run is 250, fixed), the
 # Kaitai-vs-Construct differential test above all. About an hour on 2 cores.
 PROPERTY_TESTS := tests/test_kaitai_vs_construct.py tests/test_crc.py tests/test_construct_spec.py \
                   tests/test_deframe.py tests/test_stream_properties.py tests/test_construct_compiled.py

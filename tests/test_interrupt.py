@@ -45,7 +45,8 @@ class Child:
         self.mark = uuid.uuid4().hex
         self.proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", *args], cwd=ROOT,
                                      stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                                     env=dict(os.environ, OSDKC_TEST_MARK=self.mark),
+                                     # progress every second: the tests wait for the first line
+                                     env=dict(os.environ, OSDKC_TEST_MARK=self.mark, OSDKC_PROGRESS_EVERY="1"),
                                      # a pytest-xdist worker ignores SIGINT, and an ignored signal stays
                                      # ignored across exec: give the child the disposition a shell gives
                                      preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
@@ -130,7 +131,7 @@ def test_sim_exit_after_is_a_normal_end(tmp_path):
 def test_selftest_stops_every_mutant_and_claims_no_score(sig):
     # the baseline replays every vector: a run long enough to be interrupted in the middle
     child = Child("selftest", "--jobs", "2")
-    child.wait_for("osdkc selftest:", stream="err", timeout=120)   # the first progress line (10 s in)
+    child.wait_for("osdkc selftest:", stream="err", timeout=120)   # the first progress line (1 s in)
     code, out, err, seconds = child.interrupt(sig)
     assert code == 128 + sig, out + err
     assert f"INTERRUPTED by {signal.Signals(sig).name}" in out and "no verdict" in out
@@ -146,7 +147,7 @@ def test_kit_stops_at_the_interrupted_step_and_runs_no_later_one(tmp_path):
     (reports / "device.html").write_text("complete")
     child = Child("kit", "--report-dir", str(reports))
     child.wait_for("== osdkc run", timeout=300)
-    # the implementations are running (the heartbeat comes 10 s in, once every run has been started)
+    # the implementations are running (the heartbeat comes 1 s in, once every run has been started)
     child.wait_for("implementations done", stream="err", timeout=180)
     code, out, err, seconds = child.interrupt(signal.SIGINT)
     assert code == 130, out + err

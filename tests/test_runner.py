@@ -575,3 +575,21 @@ def test_the_first_request_also_waits_for_the_start_up(tmp_path: Path) -> None:
         assert t.request({"op": "decode_frame"}) == {"ok": False, "unsupported": True}
     finally:
         t.close()
+
+
+@pytest.mark.parametrize("value, every", [(None, 10.0), ("2.5", 2.5), ("0", 10.0), ("-1", 10.0), ("soon", 10.0)])
+def test_progress_lines_off_a_terminal_come_as_often_as_the_environment_says(monkeypatch, value, every):
+    import io
+
+    from osdk_conformance.harness.runner import PROGRESS_EVERY_ENV, StatusLine
+
+    if value is None:
+        monkeypatch.delenv(PROGRESS_EVERY_ENV, raising=False)
+    else:
+        monkeypatch.setenv(PROGRESS_EVERY_ENV, value)
+    line = StatusLine(io.StringIO())
+    assert line.every == every
+    line.last -= every - 0.2
+    assert not line.due() and line.due(changed=True)
+    line.last -= 0.3
+    assert line.due()

@@ -829,13 +829,26 @@ def status_table(summaries: list[dict]) -> str:
 _PROGRESS_LINE = re.compile(r"osdkc run: ([\d,]+)/([\d,]+) cases")
 
 
+PROGRESS_EVERY_ENV = "OSDKC_PROGRESS_EVERY"
+
+
+def progress_every(default: float = 10.0) -> float:
+    """Seconds between progress lines off a terminal: OSDKC_PROGRESS_EVERY
+    where a CI log wants them closer or further apart, else `default`."""
+    try:
+        every = float(os.environ.get(PROGRESS_EVERY_ENV, default))
+    except ValueError:
+        return default
+    return every if every > 0 else default
+
+
 class StatusLine:
     """A progress line: rewritten in place on a terminal (at most twice a
     second), otherwise written as a new line when something changed or at
-    least every `every` seconds; nothing without a stream."""
+    least every `every` seconds (progress_every()); nothing without a stream."""
 
-    def __init__(self, stream: TextIO | None, every: float = 10.0) -> None:
-        self.stream, self.every = stream, every
+    def __init__(self, stream: TextIO | None, every: float | None = None) -> None:
+        self.stream, self.every = stream, progress_every() if every is None else every
         self.tty = bool(stream is not None and stream.isatty())
         self.start = self.last = time.monotonic()
 

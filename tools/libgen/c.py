@@ -13,8 +13,10 @@ library defines makes that file a dependency; the rest is libc.
 """
 from __future__ import annotations
 
+import hashlib
 import importlib.util
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -247,10 +249,38 @@ def _symbols(obj: Path, defined: bool) -> set[str]:
     return {ln.strip() for ln in out.splitlines() if ln.strip()}
 
 
+FEATURES_CACHE = ROOT / ".cache" / "libgen-c"
+
+
 def features(out: Path) -> dict[str, Any]:
-    """Each file's library dependencies and libc functions, from its objects."""
+    """Each file's library dependencies and libc functions, from its objects;
+    kept under .cache/ by the hash of everything they follow from (every
+    file compiled, the compiler, the flags), since compiling 27 objects and
+    reading their symbols takes most of a `regen --check`."""
     if shutil.which("gcc") is None or shutil.which("nm") is None:
         raise SystemExit("libgen c: gcc and nm are needed to find the libc functions of each file")
+    digest = hashlib.sha256(repr((OPT_LEVELS, FEATURES)).encode())
+    for tool in ("gcc", "nm"):
+        digest.update(subprocess.run([tool, "--version"], check=True, capture_output=True).stdout)
+    for path in sorted(out.glob("*.[ch]")):
+        digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+    cached = FEATURES_CACHE / f"{digest.hexdigest()}.json"
+    try:
+        return json.loads(cached.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        pass
+    result = _features_from_objects(out)
+    try:
+        FEATURES_CACHE.mkdir(parents=True, exist_ok=True)
+        part = cached.with_suffix(f".{os.getpid()}.part")
+        part.write_text(json.dumps(result), encoding="utf-8")
+        part.replace(cached)  # whole or absent, whoever else writes it at the same time
+    except OSError:
+        pass  # a read-only checkout measures again next time
+    return result
+
+
+def _features_from_objects(out: Path) -> dict[str, Any]:
     sources = sorted(p.name for p in out.glob("*.c"))
     defines: dict[str, str] = {}
     undefined: dict[str, set[str]] = {s: set() for s in sources}
