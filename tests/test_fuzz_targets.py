@@ -4,14 +4,14 @@ the ClusterFuzzLite layout, and the crash -> vector tool (docs/FUZZING.md).
 
 The atheris and Go runs start together when the first slow test asks
 (about 20 s each, one core each) and run while build.sh builds, so that the
-file costs about a minute of wall time. A finding fails the run:
-atheris exits non-zero, `go test -fuzz` fails and writes the input to
-conformance/testees/go/testdata/fuzz/.
+file costs about a minute of wall time (less when tests/test_languages.py,
+whose C smoke runs share the build, made it first: tests/libfuzzer_build.py).
+A finding fails the run: atheris exits non-zero, `go test -fuzz` fails and
+writes the input to conformance/testees/go/testdata/fuzz/.
 """
 from __future__ import annotations
 
 import json
-import os
 import re
 import subprocess
 import sys
@@ -24,11 +24,11 @@ ROOT = Path(__file__).resolve().parents[1]
 GO_DIR = ROOT / "conformance" / "testees" / "go"
 GO_SMOKE_EXECS = 150_000   # about what SMOKE_SECONDS give on 2 cores (15k-30k execs/s)
 SMOKE_SECONDS = 10
-CLANG, CLANGXX = "clang-14", "clang++-14"
 
 sys.path.insert(0, str(ROOT / "tools"))
 import fuzz_corpus  # noqa: E402
 import fuzz_to_vector  # noqa: E402
+from libfuzzer_build import TARGETS, clusterfuzzlite_build  # noqa: E402
 
 
 class Smoke:
@@ -67,19 +67,14 @@ def smoke_runs(tmp_path_factory):
 
 
 @pytest.mark.slow
-def test_clusterfuzzlite_build_script_builds_c_targets_that_run(tmp_path, smoke_runs):
+def test_clusterfuzzlite_build_script_builds_c_targets_that_run(tmp_path, tmp_path_factory, smoke_runs):
     # smoke_runs: the atheris and Go runs start now and fuzz while this builds
-    out, work = tmp_path / "out", tmp_path / "work"
-    env = {"SRC": str(ROOT), "OUT": str(out), "WORK": str(work), "CC": CLANG, "CXX": CLANGXX,
-           "CFLAGS": "-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link",
-           "LIB_FUZZING_ENGINE": "-fsanitize=fuzzer", "SANITIZER": "address", "PYTHON": sys.executable}
-    proc = subprocess.run(["bash", str(ROOT / ".clusterfuzzlite" / "build.sh")], capture_output=True, text=True,
-                          timeout=600, env={**_base_env(), **env})
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    build = clusterfuzzlite_build(tmp_path_factory)
+    assert build.returncode == 0, build.failure()
     # outside the builder image the Go copy is compiled (go vet), not linked
-    assert "fuzz_go_decode_stream skipped (its package copy compiles)" in proc.stdout
-    for target in ("deframer", "broadcast"):
-        binary, seeds = out / f"fuzz_{target}", out / f"fuzz_{target}_seed_corpus.zip"
+    assert "fuzz_go_decode_stream skipped (its package copy compiles)" in build.stdout
+    for target in TARGETS:
+        binary, seeds = build.out / f"fuzz_{target}", build.out / f"fuzz_{target}_seed_corpus.zip"
         with zipfile.ZipFile(seeds) as z:
             names = z.namelist()
             assert len(names) > 100
@@ -111,10 +106,6 @@ def test_go_fuzz_target_runs_and_finds_nothing(smoke_runs):
     execs = [int(n) for n in re.findall(r"execs: (\d+)", out)]
     assert execs and max(execs) > 0, out[-2000:]
     assert "--- FAIL" not in out and out.rstrip().splitlines()[-1].startswith("ok")
-
-
-def _base_env() -> dict[str, str]:
-    return {k: v for k, v in os.environ.items() if k not in ("CFLAGS", "CXXFLAGS", "LIB_FUZZING_ENGINE")}
 
 
 def test_go_corpus_file_reads_as_its_bytes(tmp_path):

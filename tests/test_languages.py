@@ -5,17 +5,23 @@ sanitized C testee over every vector, and the libFuzzer smoke runs.
 
 The compiled testees are built by `make setup`; these tests rebuild what is
 missing with the same Makefiles, so they also run after a bare `pip install`.
+The libFuzzer targets come from .clusterfuzzlite/build.sh, built once for
+these smoke runs and its own test in tests/test_fuzz_targets.py
+(tests/libfuzzer_build.py).
 """
 from __future__ import annotations
 
 import json
+import os
+import re
 import shutil
 import subprocess
 import sys
+import zipfile
 from pathlib import Path
 
 import pytest
-
+from libfuzzer_build import TARGETS, clusterfuzzlite_build
 from osdk_conformance.core import rules
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -54,6 +60,12 @@ def test_c_decoder_compiles_without_warnings(compiler, tmp_path):
     out = ok(make(C_DIR, f"{tmp_path}/osdk-c-testee", BUILD=str(tmp_path), CC=compiler))
     assert "warning" not in out.lower()
     assert (tmp_path / "osdk-c-testee").exists()
+
+
+def test_fuzz_harnesses_compile_without_warnings():
+    # the flags and -Werror of `make fuzz`; the smoke runs below use the build script's binaries
+    out = ok(make(C_DIR, "fuzz-lint"))
+    assert "warning" not in out.lower()
 
 
 def test_c_decoder_never_allocates():
@@ -110,11 +122,39 @@ def test_glue_names_no_profile_and_no_broadcast_item_type():
 
 
 @pytest.mark.slow
-def test_libfuzzer_smoke_runs_find_nothing():
-    # Both targets at once, 10 s each, seeded from vectors/ (a smoke run:
-    # `make fuzz` is the long one). A finding makes libFuzzer exit non-zero
-    # and leaves the input in build/findings/.
-    proc = make(C_DIR, "-j2", "fuzz-smoke", FUZZ_SECONDS="10", timeout=600)
-    out = ok(proc)
-    assert out.count("stat::number_of_executed_units") == 2
-    assert "ERROR: libFuzzer" not in out and "AddressSanitizer" not in out
+def test_libfuzzer_smoke_runs_find_nothing(tmp_path, tmp_path_factory):
+    # Both targets at once, 10 s each, from their whole seed corpus (the
+    # vectors; a smoke run: `make fuzz` is the long one), with the options of
+    # `make fuzz-smoke`. A finding makes libFuzzer exit non-zero and leaves
+    # the input in tmp_path.
+    build = clusterfuzzlite_build(tmp_path_factory)
+    assert build.returncode == 0, build.failure()
+    env = {**os.environ, "ASAN_OPTIONS": "abort_on_error=1:detect_leaks=1",
+           "UBSAN_OPTIONS": "halt_on_error=1:print_stacktrace=1"}
+    runs = {}
+    for target in TARGETS:
+        # new coverage goes into a corpus of its own: the seeds are shared
+        (tmp_path / target).mkdir()
+        with open(tmp_path / f"{target}.log", "w") as log:
+            runs[target] = subprocess.Popen(
+                [str(build.out / f"fuzz_{target}"), "-max_total_time=10", "-print_final_stats=1",
+                 "-rss_limit_mb=1024", f"-artifact_prefix={tmp_path}/{target}-", str(tmp_path / target),
+                 str(build.seeds(target))], stdout=log, stderr=subprocess.STDOUT, env=env)
+    try:
+        for proc in runs.values():
+            proc.wait(timeout=600)
+    finally:
+        for proc in runs.values():
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+    for target, proc in runs.items():
+        out = (tmp_path / f"{target}.log").read_text(errors="replace")
+        assert proc.returncode == 0, out[-5000:]
+        # every seed the build script packaged was read, from its unzipped
+        # copy; libFuzzer leaves out empty files (it runs the empty input anyway)
+        with zipfile.ZipFile(build.out / f"fuzz_{target}_seed_corpus.zip") as z:
+            seeds = sum(1 for info in z.infolist() if info.file_size)
+        assert re.search(rf"\b{seeds} files found in {re.escape(str(build.seeds(target)))}\n", out), out[-3000:]
+        assert "stat::number_of_executed_units" in out
+        assert "ERROR: libFuzzer" not in out and "AddressSanitizer" not in out
