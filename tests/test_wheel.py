@@ -1,8 +1,14 @@
 """The kit as a user installs it: the sdist is built from this tree, the wheel
 from the sdist (so the sdist is shown to carry everything), the wheel is
-installed into a new virtual environment outside the checkout, and the
-README's user flows run from an empty directory. Nothing of the checkout is
-on the path, and nothing is written into the installed package.
+installed into a new virtual environment outside the checkout by the install
+step of docs/ci/osdk-conformance.yml (the way an SDK's CI installs it), and
+the README's user flows run from an empty directory. Nothing of the checkout
+is on the path, and nothing is written into the installed package.
+
+Every package pip installs here, the build backend included, comes from a
+wheelhouse of the pinned versions (constraints.txt) that is downloaded once:
+each resolution against the index costs pip seconds of CPU, and the CI
+recipe's install, which names no constraints, gets the pinned versions too.
 """
 from __future__ import annotations
 
@@ -11,6 +17,7 @@ import os
 import shutil
 import subprocess
 import sys
+import tomllib
 import zipfile
 from pathlib import Path
 
@@ -23,6 +30,7 @@ from osdk_conformance.reference.worked_examples import WORKED_FRAMES
 pytestmark = pytest.mark.slow
 
 CONSTRAINTS = ROOT / "constraints.txt"
+WORKFLOW = ROOT / "docs/ci/osdk-conformance.yml"
 
 
 def run(argv: list, cwd: Path, env: dict | None = None, timeout: float = 600) -> subprocess.CompletedProcess[str]:
@@ -35,31 +43,71 @@ def ok(proc: subprocess.CompletedProcess[str]) -> str:
     return proc.stdout
 
 
+def workflow_steps() -> dict:
+    workflow = yaml.safe_load(WORKFLOW.read_text())
+    return {s.get("id"): s for s in workflow["jobs"]["conformance"]["steps"]}
+
+
 @pytest.fixture(scope="module")
-def wheel(tmp_path_factory: pytest.TempPathFactory) -> Path:
+def wheelhouse(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
+    """pip's settings (environment variables, so that they also reach the pip
+    that `build` runs and the one in the CI recipe) that install from the
+    wheelhouse only: the kit's dependencies and the build backend of the kit
+    and of osdk-kaitai, at the versions of constraints.txt."""
+    base = tmp_path_factory.mktemp("wheelhouse")
+    kit = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    library = tomllib.loads((ROOT / "generated/python/pyproject.toml").read_text())
+    wanted = {*kit["build-system"]["requires"], *kit["project"]["dependencies"],
+              *library["build-system"]["requires"]}
+    ok(run([sys.executable, "-m", "pip", "download", "--quiet", "--disable-pip-version-check", "--dest", base,
+            "-c", CONSTRAINTS, *sorted(wanted)], cwd=base))
+    return {"PIP_NO_INDEX": "1", "PIP_FIND_LINKS": str(base)}
+
+
+@pytest.fixture(scope="module")
+def wheel(wheelhouse: dict[str, str], tmp_path_factory: pytest.TempPathFactory) -> Path:
     """The wheel, built from the sdist."""
     base = tmp_path_factory.mktemp("build")
     dist = base / "dist"
-    ok(run([sys.executable, "-m", "build", "--outdir", dist, ROOT], cwd=base))
+    ok(run([sys.executable, "-m", "build", "--outdir", dist, ROOT], cwd=base, env={**os.environ, **wheelhouse}))
     wheels = sorted(dist.glob("*.whl"))
     assert len(wheels) == 1 and len(list(dist.glob("*.tar.gz"))) == 1
     return wheels[0]
 
 
 @pytest.fixture(scope="module")
-def installed(wheel: Path, tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str], Path]:
-    """(the installed osdkc, its environment, an empty working directory)."""
-    base = tmp_path_factory.mktemp("wheel")
-    venv = base / "venv"
-    ok(run([sys.executable, "-m", "venv", venv], cwd=base))
-    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "-c", CONSTRAINTS, wheel],
-           cwd=base))
-    work = base / "work"
-    work.mkdir()
+def ci_kit_step(wheel: Path, wheelhouse: dict[str, str],
+                tmp_path_factory: pytest.TempPathFactory) -> tuple[dict[str, str], dict[str, Path]]:
+    """The step of docs/ci/osdk-conformance.yml that installs the kit, run as
+    Actions would: (the job's environment after it, the runner's files).
+    It makes the new virtual environment every test of the installed kit
+    uses, so the recipe's install is the one those tests judge."""
+    base = tmp_path_factory.mktemp("runner")
+    actions = {"RUNNER_TEMP": base / "temp", "GITHUB_PATH": base / "path",
+               "GITHUB_STEP_SUMMARY": base / "summary.md"}
+    actions["RUNNER_TEMP"].mkdir()
+    # actions/setup-python's `python`: the interpreter of this run, not
+    # whichever one the machine has first on its PATH
+    setup_python = base / "setup-python"
+    setup_python.mkdir()
+    (setup_python / "python").symlink_to(Path(sys.executable).resolve())
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV", "OSDK_SEED")}
-    env["PATH"] = f"{venv / 'bin'}{os.pathsep}{env['PATH']}"
+    # no virtual environment (the checkout's included) is on the job's PATH
+    env["PATH"] = os.pathsep.join([str(setup_python), *(p for p in env["PATH"].split(os.pathsep)
+                                                        if "venv" not in p)])
     env["XDG_CACHE_HOME"] = str(base / "cache")
-    return venv / "bin/osdkc", env, work
+    ok(run(["bash", "-e", "-c", workflow_steps()["kit"]["run"]], cwd=base,
+           env={**env, **{k: str(v) for k, v in actions.items()}, **wheelhouse, "OSDKC_WHEEL": str(wheel)}))
+    env["PATH"] = os.pathsep.join([*actions["GITHUB_PATH"].read_text().split(), env["PATH"]])
+    return env, actions
+
+
+@pytest.fixture(scope="module")
+def installed(ci_kit_step, tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str], Path]:
+    """(the installed osdkc, its environment, an empty working directory)."""
+    env, actions = ci_kit_step
+    kit = Path(actions["GITHUB_PATH"].read_text().split()[0])
+    return kit / "osdkc", env, tmp_path_factory.mktemp("work")
 
 
 def osdkc(installed, *argv: str, timeout: float = 600) -> subprocess.CompletedProcess[str]:
@@ -92,14 +140,18 @@ def test_the_installed_accelerator_conforms(installed) -> None:
     assert "CONFORMS for decode_frame, decode_payload, decode_stream" in out
 
 
-def test_without_a_compiler_the_install_goes_on_in_pure_python(wheel, tmp_path) -> None:
+def test_without_a_compiler_the_install_goes_on_in_pure_python(wheel, wheelhouse, tmp_path) -> None:
     sdist = next(wheel.parent.glob("*.tar.gz"))
     venv = tmp_path / "venv"
-    ok(run([sys.executable, "-m", "venv", venv], cwd=tmp_path))
+    # without a pip of its own, which ensurepip takes seconds to install: pip --python installs
+    # into it, running in the venv's interpreter as the venv's own pip would
+    ok(run([sys.executable, "-m", "venv", "--without-pip", venv], cwd=tmp_path))
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV")}
     env["CC"] = "false"  # the C compiler fails, as a missing one does
-    ok(run([venv / "bin/pip", "install", "--quiet", "--disable-pip-version-check", "--no-cache-dir", "-c",
-            CONSTRAINTS, sdist], cwd=tmp_path, env=env))
+    # --no-cache-dir: this build is the test's own, neither taken from pip's cache nor left in it
+    ok(run([sys.executable, "-m", "pip", "--python", venv / "bin/python", "install", "--quiet",
+            "--disable-pip-version-check", "--no-cache-dir", "-c", CONSTRAINTS, sdist],
+           cwd=tmp_path, env={**env, **wheelhouse}))
     env["XDG_CACHE_HOME"] = str(tmp_path / "cache")
     out = ok(run([venv / "bin/osdkc", "--version"], cwd=tmp_path, env=env))
     assert "decoder: pure Python (no native decoder" in out
@@ -139,13 +191,13 @@ def test_run_a_bundled_python_implementation(installed, impl: str) -> None:
     assert "CONFORMS" in out
 
 
-def test_installing_and_removing_the_generated_library_leaves_the_kit_alone(installed, tmp_path: Path) -> None:
+def test_installing_and_removing_the_generated_library_leaves_the_kit_alone(installed, wheelhouse,
+                                                                           tmp_path: Path) -> None:
     exe, env, work = installed
     python, pip = exe.parent / "python", [exe.parent / "pip", "--disable-pip-version-check", "--quiet"]
     src = tmp_path / "osdk-kaitai"  # a copy: building writes into the source tree
     shutil.copytree(ROOT / "generated/python", src, ignore=shutil.ignore_patterns("__pycache__", "build"))
-    # pip's own cache, as the fixture's install had: the build backend comes from there
-    pip_env = {k: v for k, v in env.items() if k != "XDG_CACHE_HOME"}
+    pip_env = {**env, **wheelhouse}  # the build backend comes from the wheelhouse
     ok(run([*pip, "install", "--no-deps", src], cwd=work, env=pip_env))
     where = ok(run([python, "-c", "import osdk_kaitai, osdk_conformance._kaitai as k; "
                                   "print(osdk_kaitai.__file__); print(k.__file__)"], cwd=work, env=env)).split()
@@ -223,23 +275,18 @@ def test_nothing_was_written_into_the_package(installed) -> None:
     assert written == []
 
 
-def test_the_ci_recipe_runs(wheel: Path, installed, tmp_path: Path) -> None:
+def test_the_ci_recipe_runs(ci_kit_step, tmp_path: Path) -> None:
     """The steps of docs/ci/osdk-conformance.yml that are the kit's (install it,
     replay the vectors), run as Actions would, with the bundled Construct
-    testee standing in for an SDK's; the build step is the SDK's own."""
-    workflow = yaml.safe_load((ROOT / "docs/ci/osdk-conformance.yml").read_text())
-    steps = {s.get("id"): s for s in workflow["jobs"]["conformance"]["steps"]}
+    testee standing in for an SDK's; the build step is the SDK's own. The
+    install step runs in the ci_kit_step fixture: the other tests of the
+    installed kit use the venv it makes."""
+    steps = workflow_steps()
     sdk = tmp_path / "sdk"
     (sdk / "conformance").mkdir(parents=True)
     (sdk / "conformance/osdk-failures.txt").write_text("# no known failure\n")
-    actions = {"RUNNER_TEMP": tmp_path / "runner", "GITHUB_PATH": tmp_path / "path",
-               "GITHUB_STEP_SUMMARY": tmp_path / "summary.md"}
-    actions["RUNNER_TEMP"].mkdir()
-    _, env, _ = installed
+    env, actions = ci_kit_step
     env = {**env, **{k: str(v) for k, v in actions.items()}}
-    env["PATH"] = os.pathsep.join(p for p in env["PATH"].split(os.pathsep) if "venv" not in p)
-    ok(run(["bash", "-e", "-c", steps["kit"]["run"]], cwd=sdk, env={**env, "OSDKC_WHEEL": str(wheel)}))
-    env["PATH"] = os.pathsep.join([*actions["GITHUB_PATH"].read_text().split(), env["PATH"]])
     kit = Path(actions["GITHUB_PATH"].read_text().split()[0])
     data = ok(run([kit / "python", "-c", "from osdk_conformance.core.paths import ROOT; print(ROOT)"],
                   cwd=sdk, env=env)).strip()
