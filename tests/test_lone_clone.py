@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 import subprocess
 import sys
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -39,9 +40,26 @@ def lone(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]
     return repo, env
 
 
-def _run(lone: tuple[Path, dict[str, str]], *argv: str) -> subprocess.CompletedProcess[str]:
+def _run(lone: tuple[Path, dict[str, str]], *argv: str, timeout: float = 120) -> subprocess.CompletedProcess[str]:
     repo, env = lone
-    return subprocess.run([sys.executable, *argv], cwd=repo, env=env, capture_output=True, text=True, timeout=120)
+    return subprocess.run([sys.executable, *argv], cwd=repo, env=env, capture_output=True, text=True, timeout=timeout)
+
+
+SPEC_CHECK = ("-m", "osdk_conformance.cli", "spec", "check")
+TRACE_TESTS = ("-m", "pytest", "-q", "-p", "no:cacheprovider", "-rs", "tests/test_trace.py")
+
+
+@pytest.fixture(scope="module")
+def slow_runs(lone: tuple[Path, dict[str, str]]) -> dict[tuple[str, ...], subprocess.CompletedProcess[str]]:
+    """`osdkc spec check` and the copy's trace tests, the two long runs of this
+    file, side by side: neither writes where the other reads (the check
+    regenerates into scratch directories, the tests write to their
+    tmp_path), and the tests are one Python process, which leaves the other
+    core to the check. Each test below judges its own run."""
+    with ThreadPoolExecutor(2) as pool:
+        # the timeout allows for the two sharing the cores
+        futures = {argv: pool.submit(_run, lone, *argv, timeout=300) for argv in (SPEC_CHECK, TRACE_TESTS)}
+    return {argv: f.result() for argv, f in futures.items()}
 
 
 def test_the_copy_runs_its_own_modules(lone: tuple[Path, dict[str, str]]) -> None:
@@ -67,16 +85,17 @@ def test_spec_trace_skips_the_seed_checks_and_passes(lone: tuple[Path, dict[str,
                          "SKIPPED the checks against the seed")
 
 
-def test_spec_check_passes_with_the_trace_partly_skipped(lone: tuple[Path, dict[str, str]]) -> None:
-    proc = _run(lone, "-m", "osdk_conformance.cli", "spec", "check")
+def test_spec_check_passes_with_the_trace_partly_skipped(
+        slow_runs: dict[tuple[str, ...], subprocess.CompletedProcess[str]]) -> None:
+    proc = slow_runs[SPEC_CHECK]
     assert proc.returncode == 0, proc.stdout + proc.stderr
     status = {line.split()[1]: line.split()[0] for line in proc.stdout.splitlines() if line.startswith("  ")}
     assert status == {"ksy": "ok", "rules": "ok", "trace": "skip", "errata": "ok"}
     assert proc.stdout.splitlines()[-1] == "spec check: all passed (partly skipped: trace)"
 
 
-def test_trace_tests_pass(lone: tuple[Path, dict[str, str]]) -> None:
-    proc = _run(lone, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-rs", "tests/test_trace.py")
+def test_trace_tests_pass(slow_runs: dict[tuple[str, ...], subprocess.CompletedProcess[str]]) -> None:
+    proc = slow_runs[TRACE_TESTS]
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr
     # the one test that needs the real seed says why it did not run
     assert "SKIPPED [1] tests/test_trace.py" in proc.stdout and "OSDK_SEED not set" in proc.stdout
