@@ -221,7 +221,10 @@ class Child:
     def __init__(self, argv: list[str], env: dict | None = None) -> None:
         self.master, slave = os.openpty()
         self.proc = subprocess.Popen(argv, stdin=slave, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                     env=dict(os.environ, **(env or {})))
+                                     env=dict(os.environ, **(env or {})),
+                                     # a pytest-xdist worker ignores SIGINT, and an ignored signal stays
+                                     # ignored across exec: give the child the disposition a shell gives
+                                     preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
         os.close(slave)
         self.err = b""
         self.lock = threading.Condition()
