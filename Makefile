@@ -72,24 +72,22 @@ kit: setup
 	$(BIN)/osdkc kit
 
 # The whole suite; hypothesis runs its CI profile (tests/conftest.py).
-# pytest-xdist spreads the test files over the cores (a file's tests stay
-# together, so its module fixtures run once); the `realtime` tests, which
-# judge a live simulator's timing, run afterwards one at a time: two at once
-# share the pseudo-terminal numbers, and a device that reopens its port after
-# an unplug test can reach the other test's new simulator and change its rates.
+# tools/run_tests.py runs two pytest runs side by side: the `realtime` tests,
+# which judge a live simulator's timing and mostly wait, one at a time at
+# normal priority; everything else at nice 10, pytest-xdist spreading the test
+# files over the cores (a file's tests stay together, so its module fixtures
+# run once). The realtime part's output is printed at the end.
 # tests/test_vectors.py checks that vectors/ regenerates byte for byte.
 JOBS ?= auto
 test: setup check-generated
-	$(BIN)/pytest -q -n $(JOBS) --dist loadfile -m 'not realtime'
-	$(BIN)/pytest -q -m realtime
+	$(BIN)/python tools/run_tests.py --jobs $(JOBS)
 
 # A fast subset for development: no slow property tests, few examples.
 quick: setup
-	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/pytest -q -m 'not slow and not realtime' -n $(JOBS) --dist loadfile
-	$(BIN)/pytest -q -m 'realtime and not slow'
+	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/python tools/run_tests.py --jobs $(JOBS) --marks 'not slow'
 
 # The long property campaign: every hypothesis property of the suite with
-# 10,000 randomized examples each (the suite's own smoke run is 250, fixed), the
+# 10,000 randomized examples each (the suite's own smoke run is 100, fixed), the
 # Kaitai-vs-Construct differential test above all. About an hour on 2 cores.
 PROPERTY_TESTS := tests/test_kaitai_vs_construct.py tests/test_crc.py tests/test_construct_spec.py \
                   tests/test_deframe.py tests/test_stream_properties.py tests/test_construct_compiled.py

@@ -85,8 +85,8 @@ def test_decode_reads_a_capture_like_the_bytes_it_received(tmp_path):
     assert a.stdout == b.stdout and a.stdout.count(b'"kind": "frame"') == 2
 
 
-# Measures rates and timing of a live simulator: run alone, never beside
-# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+# Measures rates and timing of a live simulator: tools/run_tests.py runs the
+# `realtime` tests one at a time, at a higher priority than the CPU-heavy rest.
 @pytest.mark.realtime
 def test_sigkilled_device_run_leaves_a_capture_that_replays(tmp_path):
     cap = tmp_path / "killed.pcapng"

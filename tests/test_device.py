@@ -20,8 +20,8 @@ from osdk_conformance.bench.reliability import FAULT_CASES
 from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.sim.simulator import spawned
 
-# Measures rates and timing of a live simulator: run alone, never beside
-# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+# Measures rates and timing of a live simulator: tools/run_tests.py runs the
+# `realtime` tests one at a time, at a higher priority than the CPU-heavy rest.
 pytestmark = pytest.mark.realtime
 
 PROFILES = profile_names()

@@ -2,8 +2,10 @@
 and the simulator answering over a real pseudo-terminal through pyserial."""
 from __future__ import annotations
 
+import errno
 import json
 import math
+import os
 import signal
 import subprocess
 import sys
@@ -16,12 +18,12 @@ from osdk_conformance.core.deframe import Frame, deframe
 from osdk_conformance.core.rules import profile as load_profile
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.sim.simulator import (PtyTransport, SimConfig, Simulator, Vehicle, euler_to_quaternion,
-                                  quaternion_to_euler)
+                                            quaternion_to_euler, spawned)
 from osdk_conformance._construct.control import encode_movement_control
 from osdk_conformance._construct.payload import osdk_payload
 
-# Measures rates and timing of a live simulator: run alone, never beside
-# CPU-heavy tests (the Makefile runs the `realtime` tests after the rest).
+# Measures rates and timing of a live simulator: tools/run_tests.py runs the
+# `realtime` tests one at a time, at a higher priority than the CPU-heavy rest.
 pytestmark = pytest.mark.realtime
 
 
@@ -208,3 +210,47 @@ def test_bytes_at_the_wrong_speed_are_counted_not_dropped_silently(tmp_path):
     assert s["commands_received"] == 0
     assert s["rx_bytes"] == len(frame) + 10
     assert s["rx_bytes_discarded"] == {"baud_mismatch": len(frame) + 5, "stalled": 0, "not_a_frame": 5}
+
+
+def _open_error(path) -> int | None:
+    try:
+        os.close(os.open(path, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK))
+    except OSError as e:
+        return e.errno
+    return None
+
+
+def test_an_unplugged_port_keeps_its_terminal_number_until_it_is_back(tmp_path):
+    """Another program's new pseudo-terminal never gets the number of an
+    unplugged one: a host reopening its port would reach that program."""
+    link = tmp_path / "ttyFC"
+    t = PtyTransport(str(link))
+    others = []
+    try:
+        first = t.path
+        assert os.path.realpath(link) == first
+        t.unplug()
+        assert _open_error(link) == errno.ENOENT and _open_error(first) == errno.ENOENT
+        others.append(os.openpty())
+        assert os.ttyname(others[-1][1]) != first
+        t.replug()
+        assert os.path.realpath(link) == t.path != first and _open_error(link) is None
+    finally:
+        t.close()
+        for fds in others:
+            for fd in fds:
+                os.close(fd)
+    assert not link.exists() and t.unplugged_slave == -1
+
+
+def test_a_killed_simulator_s_terminal_number_is_not_given_away_while_it_is_spawned():
+    with spawned("--profile", "a3-fw3.1") as (url, proc):
+        proc.kill()
+        proc.wait()
+        assert _open_error(url) in (errno.ENOENT, errno.EIO)
+        m, s = os.openpty()
+        try:
+            assert os.ttyname(s) != url
+        finally:
+            os.close(m)
+            os.close(s)

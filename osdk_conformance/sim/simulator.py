@@ -223,6 +223,7 @@ class PtyTransport:
     def __init__(self, link: str | None = None) -> None:
         self.link = link
         self.master = self.slave = -1
+        self.unplugged_slave = -1
         self._open()
 
     def _open(self) -> None:
@@ -287,21 +288,34 @@ class PtyTransport:
             return None
 
     def unplug(self) -> None:
-        for fd in (self.master, self.slave):
-            if fd >= 0:
-                os.close(fd)
-        self.master = self.slave = -1
+        # The name goes first, and the slave stays open until the port is
+        # back: a host that reopens the port in between finds no such file,
+        # and the kernel cannot give this terminal's number to another
+        # program's new pseudo-terminal, which a reopening host would reach.
         if self.link:
             try:
                 os.unlink(self.link)
             except FileNotFoundError:
                 pass
+        if self.master >= 0:
+            os.close(self.master)
+        if self.slave >= 0:
+            self._release_unplugged()
+            self.unplugged_slave = self.slave
+        self.master = self.slave = -1
+
+    def _release_unplugged(self) -> None:
+        if self.unplugged_slave >= 0:
+            os.close(self.unplugged_slave)
+            self.unplugged_slave = -1
 
     def replug(self) -> None:
         self._open()
+        self._release_unplugged()
 
     def close(self) -> None:
         self.unplug()
+        self._release_unplugged()
 
 
 class TcpTransport:
@@ -1042,14 +1056,31 @@ def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
     proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *sim_args],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
                             start_new_session=new_session)
+    held = -1
     try:
         url = proc.stdout.readline().strip()
         if not url:
             proc.wait()
             raise UsageError("osdkc sim did not start: " + proc.stderr.read().strip())
+        held = _hold_terminal(url)
         yield url, proc
     finally:
         stop_child(proc)
+        if held >= 0:
+            os.close(held)
+
+
+def _hold_terminal(url: str) -> int:
+    """The simulator's pseudo-terminal opened and left unread (-1 for a TCP
+    port): while a descriptor is open the kernel keeps the terminal's number,
+    so a host still reopening the port after the simulator died finds no
+    such file instead of another program's new terminal of the same name."""
+    if "://" in url:
+        return -1
+    try:
+        return os.open(url, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    except OSError:
+        return -1
 
 
 def run_sim(args: argparse.Namespace) -> int:

@@ -108,7 +108,7 @@ def errata_ids(path: Path = ERRATA) -> set[str]:
 class Resolver:
     def __init__(self) -> None:
         self.index = ksy.load()
-        self.rules = yaml.safe_load(RULES.read_text()) if RULES.exists() else {}
+        self.rules = yaml.load(RULES.read_text(), Loader=ksy.SafeLoader) if RULES.exists() else {}  # noqa: S506
         self.errata = errata_ids()
 
     def exists(self, ref: str) -> bool:
@@ -137,7 +137,7 @@ def _load(trace_path: Path) -> dict:
     if not trace_path.exists():
         raise TraceError(f"{trace_path} does not exist")
     try:
-        doc = yaml.safe_load(trace_path.read_text(encoding="utf-8"))
+        doc = yaml.load(trace_path.read_text(encoding="utf-8"), Loader=ksy.SafeLoader)  # noqa: S506 - a safe loader
     except yaml.YAMLError as e:
         raise TraceError(f"{trace_path.name}: not valid YAML: {e}") from None
     if not isinstance(doc, dict):

@@ -16,6 +16,7 @@ from typing import Any, Optional
 
 import yaml
 
+from osdk_conformance.core.ksy import SafeLoader  # libyaml's, where PyYAML has it
 from expr import ExprError, const_value, names_used  # noqa: F401  (re-exported for generate.py)
 
 
@@ -124,7 +125,7 @@ class Spec:
     def __init__(self, spec_dir: Path) -> None:
         self.files: dict[str, dict] = {}
         for path in sorted(spec_dir.glob("*.ksy")):
-            doc = yaml.safe_load(path.read_text(encoding="utf-8"))
+            doc = yaml.load(path.read_text(encoding="utf-8"), Loader=SafeLoader)  # noqa: S506 - a safe loader
             fid = doc["meta"]["id"]
             if fid != path.stem:
                 raise SpecError(f"{path.name}: meta.id {fid!r} differs from the file name")
