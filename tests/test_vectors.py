@@ -365,21 +365,22 @@ def test_no_bug_class_table_has_a_hole(cases):
     assert len(holes) == 5
 
 
-@pytest.mark.parametrize("prefix, title", [
-    (".stream_error.", "stream error class"),
-    (".precedence.", "frame rule pair"),
-    (".header_bits.", "header field bit"),
-    (".ack.", "command kind \\ ACK situation"),
+@pytest.mark.parametrize("prefix, title, make", [
+    (".stream_error.", "stream error class", "stream_error_table"),
+    (".precedence.", "frame rule pair", "rule_pair_table"),
+    (".header_bits.", "header field bit", "header_bit_table"),
+    (".ack.", "command kind \\ ACK situation", "ack_table"),
 ])
-def test_each_table_shows_holes_without_its_cases(cases, prefix, title):
+def test_each_table_shows_holes_without_its_cases(cases, prefix, title, make):
     """The tables count what the bytes exercise: without the cases generated
-    for a class, its table has holes again (as it had before they existed)."""
-    from osdk_conformance.harness.vector_tables import tables
+    for a class, its table has holes again (as it had before they existed).
+    Only that table is made (each one reads every case)."""
+    from osdk_conformance.harness import vector_tables
 
     rest = [c for c in cases if prefix not in c.id]
     assert len(rest) < len(cases)
-    table = next(t for t in tables(rest) if t.title == title)
-    assert table.holes, title
+    table = getattr(vector_tables, make)(rest)
+    assert table.title == title and table.holes, title
 
 
 def test_movement_precedence_holes_without_its_cases(cases):
