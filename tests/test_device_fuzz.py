@@ -19,6 +19,7 @@ import signal
 import subprocess
 import sys
 import threading
+import time
 import xml.etree.ElementTree as ET
 from collections import Counter
 from pathlib import Path
@@ -277,6 +278,20 @@ def test_the_command_line_finds_replays_and_reports(tmp_path):
         assert again.returncode == status and f"osdkc fuzz: {word}" in again.stdout, again.stdout + again.stderr
 
 
+def _wait_for_a_movement_command(capture: Path, proc: subprocess.Popen, timeout: float = 30) -> None:
+    """Until the capture being written holds a movement command sent (a fixed
+    wait missed them on a loaded machine: none had gone out after 2 s)."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline and proc.poll() is None:
+        try:
+            if any((op.cmd_set, op.cmd_id) == (1, 3) for op in sent_frames(capture)):
+                return
+        except (OSError, ValueError):
+            pass   # not written yet, or its last block still being written
+        time.sleep(0.2)
+    raise AssertionError(f"no movement command in {capture} after {timeout} s")
+
+
 def _interrupt(tmp: Path, sig: int, extra: tuple[str, ...]) -> tuple[int, dict, str, list]:
     stats = tmp / "sim.json"
     with spawned("--stats", str(stats), "--app-id", "7") as (url, _):
@@ -290,7 +305,7 @@ def _interrupt(tmp: Path, sig: int, extra: tuple[str, ...]) -> tuple[int, dict, 
             assert line is not None, "the session ended before it could be interrupted"
             if "capturing to" in line:
                 break
-        threading.Event().wait(2.0)   # cases are being sent
+        _wait_for_a_movement_command(tmp / "f.pcapng", proc)   # the interrupt falls inside the motion session
         os.kill(proc.pid, sig)
         out, _ = proc.communicate(timeout=60)
     return proc.returncode, json.loads(stats.read_text()), out, sent_frames(tmp / "f.pcapng")
