@@ -35,8 +35,9 @@ from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.device.active import Commander
 from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS, ZERO_VELOCITY_MODES, cases, safe
-from osdk_conformance.device.fuzz_report import REPRO_FORMAT, write_findings
+from osdk_conformance.device.fuzz_report import REPRO_FORMAT, results_of, write_findings
 from osdk_conformance.device.fuzz_session import FuzzSession, SessionOptions
+from osdk_conformance.device.hostload import HostClock, HostLoad
 from osdk_conformance.device.liveness import SYMPTOMS, LivenessOptions
 from osdk_conformance.device.port import Port
 from osdk_conformance.sim.bugs import RECEIVE_BUFFER
@@ -51,6 +52,7 @@ CLI = [sys.executable, "-m", "osdk_conformance.cli", "fuzz"]
 # ---- the cases -------------------------------------------------------------
 
 
+@pytest.mark.slow
 def test_cases_are_reproducible_by_seed_and_every_kind_comes_early():
     first = list(itertools.islice(cases(PROFILE, 5), 300))
     assert first == list(itertools.islice(cases(PROFILE, 5), 300))
@@ -61,6 +63,7 @@ def test_cases_are_reproducible_by_seed_and_every_kind_comes_early():
     assert all(c.writes and all(c.writes) for c in first)
 
 
+@pytest.mark.slow
 def test_no_case_could_move_the_aircraft_or_take_control_without_allow_motion():
     withheld: dict[str, int] = {}
     sent = list(itertools.islice(cases(PROFILE, 1, withheld=withheld), 3000))
@@ -164,7 +167,8 @@ def test_a_bad_reproducer_is_refused_before_the_port_is_opened(content, message,
 # ---- sessions against the simulator ----------------------------------------
 
 
-def run_session(sim, tmp: Path, key: bytes | None = None, encrypt: bool = False, **options):
+def run_session(sim, tmp: Path, key: bytes | None = None, encrypt: bool = False, host: HostClock | None = None,
+                **options):
     """A session in this process against `sim` over its pty, at 921600 baud."""
     an = Analyzer(PROFILE, key)
     port = Port(sim.url, 921600, an)
@@ -182,7 +186,7 @@ def run_session(sim, tmp: Path, key: bytes | None = None, encrypt: bool = False,
             return str(e)
         return None
     session = FuzzSession(port, an, opts, Commander(port, an, PROFILE, key, encrypt, ack_timeout=0.3), cap.path,
-                          restart)
+                          restart, host=host)
     try:
         out = session.run()
     finally:
@@ -218,7 +222,8 @@ def test_a_healthy_simulator_survives_every_kind_and_gives_no_finding(tmp_path):
 
 
 @pytest.mark.realtime
-@pytest.mark.parametrize("bug", ["long-frame-hang", "header-only-reset", "unknown-cmd-silence"])
+@pytest.mark.parametrize("bug", [pytest.param("long-frame-hang", marks=pytest.mark.slow), "header-only-reset",
+                                 "unknown-cmd-silence"])
 def test_each_planted_bug_is_found_confirmed_and_minimised(bug, tmp_path):
     with api.simulator(PROFILE, bugs=[bug]) as sim:
         session, out = run_session(sim, tmp_path, max_cases=200, max_findings=1)
@@ -249,6 +254,7 @@ def test_each_planted_bug_is_found_confirmed_and_minimised(bug, tmp_path):
     assert done.returncode == 0, done.stdout + done.stderr
 
 
+@pytest.mark.slow
 @pytest.mark.realtime
 def test_the_command_line_finds_replays_and_reports(tmp_path):
     """The whole command against `osdkc sim` processes: --restart-cmd with
@@ -335,6 +341,7 @@ def test_an_interrupted_motion_session_releases_control_and_restores_the_rates(s
     assert names["active.control_release"].find("failure") is None
 
 
+@pytest.mark.slow
 @pytest.mark.realtime
 def test_a_device_that_goes_away_mid_session_ends_it_with_a_finding_not_a_traceback(tmp_path):
     with spawned() as (url, sim):
@@ -350,6 +357,65 @@ def test_a_device_that_goes_away_mid_session_ends_it_with_a_finding_not_a_traceb
     suite = ET.parse(tmp_path / "f.xml").getroot()
     assert any(tc.find("failure") is not None for tc in suite.iter("testcase"))
     assert read_capture(tmp_path / "f.pcapng").records
+
+
+@pytest.mark.slow
+@pytest.mark.realtime
+def test_a_fuzzer_stopped_by_its_host_makes_no_finding(tmp_path):
+    """The fuzzer's process is stopped for 3 s (SIGSTOP, then SIGCONT: what a
+    saturated host does to it, only longer) while a healthy simulator goes on
+    broadcasting. Before, 2 sessions in 3 reported FOUND 1, "the broadcast
+    slowed", NOT confirmed: the frames lost in the full pty meanwhile were
+    counted as frames the FC did not send."""
+    with spawned("--baud", "921600") as (url, _):
+        proc = subprocess.Popen(CLI + ["--port", url, "--profile", PROFILE, "--baud", "921600", "--seconds", "7",
+                                       "--seed", "1", "--no-capture", "-q"],
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+        time.sleep(2.5)   # started (about 0.5 s) and fuzzing
+        os.kill(proc.pid, signal.SIGSTOP)
+        time.sleep(3.0)
+        os.kill(proc.pid, signal.SIGCONT)
+        out, err = proc.communicate(timeout=120)
+    assert proc.returncode in (0, 3), out + err
+    assert "FAIL " not in out and "FOUND" not in out.replace("NOTHING FOUND", ""), out
+    if proc.returncode == 3:
+        assert "osdkc fuzz: INCONCLUSIVE: " in out and "host too busy: fuzz.host" in out, out
+
+
+class FixedHost(HostClock):
+    """A host whose load is given, not measured."""
+
+    def __init__(self, load: HostLoad) -> None:
+        super().__init__()
+        self.fixed = load
+
+    def load(self) -> HostLoad:
+        return self.fixed
+
+
+@pytest.mark.realtime
+@pytest.mark.parametrize("load1", [0.2, 5.0], ids=("idle", "busy"))
+def test_a_broadcast_slow_from_the_start_is_no_finding(load1, tmp_path):
+    """The device broadcasts at 10 Hz where 100 are configured, before any
+    case. On an idle host the fuzzer checks it with no case sent, finds it
+    just as slow and ends the session: not a case's doing. On a busy host a
+    live but slower broadcast is what a starved simulator shows, and is not
+    judged."""
+    with api.simulator(PROFILE, rates={item: 10 for item in api.broadcast_items(PROFILE)}) as sim:
+        session, out = run_session(sim, tmp_path, max_cases=60,
+                                   host=FixedHost(HostLoad(cores=2, load1=load1, cpu_s=0.0, wall_s=1.0)))
+    assert out.findings == [] and out.start_problem == ""
+    results = {r.id: r for r in results_of(out, {})}
+    if load1 < 2:
+        assert "no case sent" in out.unwell and out.unwell_host == ""
+        assert results["fuzz.health"].status == "error" and "not a case's doing" in results["fuzz.health"].message
+        assert sum(out.sent.values()) < 60   # the session ended there
+    else:
+        assert out.unwell == "" and out.not_judged and not any(j.replayed for j in out.not_judged)
+        assert sum(out.sent.values()) == 60
+        host = results["fuzz.host"]
+        assert host.status == "skip" and host.kind == "host too busy"
+        assert "load average 5.00 on 2 cores" in host.message
 
 
 def test_the_analyzer_forgets_what_a_long_session_no_longer_needs():

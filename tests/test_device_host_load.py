@@ -144,3 +144,65 @@ def test_a_judge_stopped_by_its_host_is_inconclusive_not_a_failing_fc(tmp_path):
     assert proc.returncode == 3, out + err
     assert "osdkc device: INCONCLUSIVE: " in out and "host too busy" in out
     assert "FAIL " not in out, out
+
+
+# ---- the fuzzer's liveness check (device/liveness.py) ---------------------------------------------
+
+
+def liveness_rate(stamps: list[float], arrivals: list[float], seqs: list[int] | None = None,
+                  items: tuple[str, ...] | None = None):
+    """The broadcast half of `osdkc fuzz --port`'s check, made just after the
+    last of these frames arrived (arrival times end now, on the wall clock)."""
+    import time
+
+    from osdk_conformance.device.liveness import Check, Liveness, LivenessOptions
+
+    sim = Simulator(SimConfig(profile=PROFILE), transport=None)
+    items = list(items or sim.profile.flag_bits)
+    an = Analyzer(PROFILE, expect_rates={i: 100 for i in sim.profile.flag_bits})
+    frames = [encode(cmd_set=2, cmd_id=0, value=sim.broadcast_value(items, stamp, stamp), seq=seq)
+              for seq, stamp in zip(seqs or range(len(stamps)), stamps)]
+    shift = time.time() - arrivals[-1] - 0.01
+    for t, frame in zip(arrivals, frames):
+        an.feed_rx(t + shift, frame)
+    # the rate alone: however long this busy test host took to get here, no frame is overdue
+    live = Liveness(an, lambda data, comment: None, PROFILE, LivenessOptions(rate_window=2.0, stall_timeout=60.0))
+    live.window_start = arrivals[0] + shift
+    check = Check(time.time(), "a case")
+    live.broadcast(check)
+    return check
+
+
+def test_frames_a_busy_host_lost_are_no_slower_broadcast():
+    """A steady 100 Hz FC; the host read only every third frame of the last
+    two seconds (the rest were lost in a full buffer while its reader waited):
+    on arrival that is 33 frames/s, on the FC's SEQ and clock 100."""
+    stamps = steady()
+    keep = [k for k in range(FRAMES) if k < 300 or k % 3 == 0]
+    check = liveness_rate([stamps[k] for k in keep], [stamps[k] for k in keep], seqs=keep)
+    assert "broadcast_slow" not in check.symptoms, check.describe()
+    assert check.details["rate_hz"] == pytest.approx(100, abs=1)
+
+
+def test_a_late_burst_is_no_slower_broadcast():
+    """The last second of a steady 100 Hz stream read in one burst at the end."""
+    stamps = steady()
+    check = liveness_rate(stamps, host_paused(1.0, at=400))
+    assert check.ok, check.describe()
+
+
+def test_an_fc_that_slows_down_is_slow_on_its_own_clock():
+    stamps = steady(300) + [steady()[299] + (k + 1) * 0.025 for k in range(80)]   # then 40 Hz
+    check = liveness_rate(stamps, stamps)
+    assert check.symptoms == ["broadcast_slow"]
+    assert "on the flight controller time stamp clock" in check.details["broadcast_slow"]
+
+
+def test_without_time_stamps_a_slow_arrival_is_a_slow_broadcast():
+    keep = [k for k in range(FRAMES) if k < 300 or k % 3 == 0]
+    arrivals = [steady()[k] for k in keep]
+    items = tuple(i for i in Simulator(SimConfig(profile=PROFILE), transport=None).profile.flag_bits
+                  if i != "time_stamp")
+    check = liveness_rate(arrivals, arrivals, seqs=keep, items=items)
+    assert check.symptoms == ["broadcast_slow"]
+    assert "on the arrival clock" in check.details["broadcast_slow"]

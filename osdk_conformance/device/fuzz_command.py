@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Callable, Sequence
 
 from osdk_conformance.core.capture import CaptureWriter
-from osdk_conformance.core.errors import UsageError, cannot_read, one_line
+from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError, cannot_read, one_line
 from osdk_conformance.core.options import baud_rate, fraction, positive_float, positive_int, uint32
 from osdk_conformance.core.wire import key_option
 from osdk_conformance.device.acceptance import MOTION_WARNING, confirm_motion, expect_rates
@@ -40,14 +40,15 @@ from osdk_conformance.device.fuzz_session import FuzzSession, SessionOptions, Se
 from osdk_conformance.device.liveness import LivenessOptions
 from osdk_conformance.device.plots import checks_html
 from osdk_conformance.device.port import Port
-from osdk_conformance.device.verdict import FOUND, INTERRUPTED, NOTHING_FOUND, counts
+from osdk_conformance.device.verdict import FOUND, INCONCLUSIVE, INTERRUPTED, NOTHING_FOUND, counts
 from osdk_conformance.harness import fuzz as differential
 from osdk_conformance.harness.report import Result, conforms, write_html, write_junit
 
 DIFFERENTIAL_ONLY = ("testee", "impl", "max_examples", "out", "op", "timeout")
 EXIT_STATUS = ("exit status with --port: 0 NOTHING FOUND, 1 FOUND n (or the device was not live before the first "
-               "case, or no case was sent; with --replay: the finding REPRODUCED, or the reproducer was not sent), "
-               "2 usage or port error, or movement control not confirmed, 130 interrupted by SIGINT (also at the "
+               "case, or no case was sent, or it failed its check with no case sent: STOPPED; with --replay: the finding "
+               "REPRODUCED, or the reproducer was not sent), 3 INCONCLUSIVE (no finding, but checks failed on timing "
+               "while this host was busy: not judged), 2 usage or port error, or movement control not confirmed, 130 interrupted by SIGINT (also at the "
                "--allow-motion question), 143 by SIGTERM (INTERRUPTED: an interrupted session releases control, "
                "restores the rates it changed and still writes its reports)")
 
@@ -273,8 +274,12 @@ def _verdict(args, results: list[Result], out: SessionOutcome, total: int, seed:
         return f"{FOUND} {len(out.findings)}: {tail}; reproducers in {findings_dir}", 1
     if not total:   # no case sent is no verdict
         return f"NOTHING FUZZED: {tail}", 1
+    if out.unwell and not out.unwell_host:   # not a case's doing: no finding, and the cases after it were never sent
+        return f"STOPPED: {tail}", 1
     if not conforms(results):   # no finding, but the session did not end well
         return f"{'STOPPED' if error or out.port_lost else 'CLEAN-UP FAILED'}: {tail}", 1
+    if out.unwell or out.not_judged:   # no finding, but this host kept checks from being judged
+        return f"{INCONCLUSIVE}: {tail}", EXIT_INCONCLUSIVE
     return f"{NOTHING_FOUND}: {tail}", 0
 
 

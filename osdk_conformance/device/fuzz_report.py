@@ -17,6 +17,7 @@ from pathlib import Path
 from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.device.fuzz_cases import KINDS, MOTION_KINDS
 from osdk_conformance.device.fuzz_session import Finding, SessionOutcome
+from osdk_conformance.device.hostload import HOST_TOO_BUSY
 from osdk_conformance.device.plots import Marker, Panel, markers_html, small_multiples
 from osdk_conformance.harness.fuzz import regression_vector, suite_document
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, Result
@@ -33,6 +34,12 @@ def results_of(out: SessionOutcome, repro_paths: dict[int, Path], kinds: tuple[s
                           f"{out.start_problem}; nothing was fuzzed", kind="not_live"))
     if out.port_lost:
         res.append(Result("fuzz", "fuzz.port", FAIL, out.port_lost + "; the session ended there", kind="port_lost"))
+    if out.unwell:
+        res.append(Result("fuzz", "fuzz.health", SKIP if out.unwell_host else ERROR,
+                          (f"not judged: this host was busy ({out.unwell_host}); a flight controller simulated on "
+                           "this host may have been starved of CPU. " if out.unwell_host else "")
+                          + out.unwell + "; the session ended there",
+                          kind=HOST_TOO_BUSY if out.unwell_host else "not_live"))
     by_kind: dict[str, list[Finding]] = {}
     for f in out.findings:
         for k in sorted(set(f.kinds) | f.repeated_kinds):
@@ -61,11 +68,23 @@ def results_of(out: SessionOutcome, repro_paths: dict[int, Path], kinds: tuple[s
             res.append(Result("cases", cid, SKIP, why, {"withheld": withheld, "what": what}, kind=short))
     for f in out.findings:
         res.append(finding_result(f, repro_paths.get(f.number)))
+    if out.not_judged:
+        n = len(out.not_judged)
+        replayed = sum(j.replayed for j in out.not_judged)
+        res.append(Result("liveness", "fuzz.host", SKIP,
+                          f"not judged: {n} check(s) failed on timing alone while this host was busy "
+                          f"({replayed} passed when their cases were replayed, {n - replayed} saw a live but slower "
+                          f"broadcast); no finding made of them (after {', '.join(j.after for j in out.not_judged[:20])}"
+                          f"{'…' if n > 20 else ''}; {out.not_judged[-1].host})",
+                          {"after": [j.after for j in out.not_judged], "symptoms": [j.check.symptoms for j in out.not_judged]},
+                          kind=HOST_TOO_BUSY))
     if out.checks:
         failed = len(out.findings) + sum(f.repeats for f in out.findings)
+        busy = f", {len(out.not_judged)} more on timing alone while this host was busy" if out.not_judged else ""
         res.append(Result("liveness", "fuzz.liveness", PASS if not out.findings else FAIL,
-                          f"{out.checks} checks after cases, {failed} failed, {out.retried_checks} needed a second "
-                          "probe after padding", {"checks": out.checks, "retried": out.retried_checks}))
+                          f"{out.checks} checks after cases, {failed} failed{busy}, {out.retried_checks} needed a "
+                          "second probe after padding",
+                          {"checks": out.checks, "retried": out.retried_checks, "not_judged": len(out.not_judged)}))
     return res
 
 

@@ -10,6 +10,17 @@ then to the fewest writes and bytes. Between trials the device is brought
 back by the restart command when there is one (a relay that power-cycles
 it, or `kill -HUP` for `osdkc sim`), else by waiting for it to recover.
 
+A busy host can fail a check on timing alone (a reader left waiting, a
+stand-in flight controller starved on the same host), so such a check first
+faces two controls. The device, brought back, is checked with no case sent:
+failing the same way, the symptom is not a case's doing, and the session
+ends there (INCONCLUSIVE when this host was busy). And a failure the replay
+does not confirm, seen while this host was busy (its reader not scheduled
+for HOST_STALL_S, or more runnable work than cores), is not a finding: it is
+counted as a check not judged, host too busy; so is, on a busy host, a
+broadcast that is live but slower than configured, without a replay: it
+is what a stand-in FC starved on the same host shows.
+
 Bytes go out (PacedPort) no faster than the line carries them (10 bits a byte at the
 baud rate), so a pseudo-terminal sees what a UART would, and the time a
 case takes is the time it would take on the wire.
@@ -33,6 +44,7 @@ from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.core.wire import open_frame
 from osdk_conformance.device.active import ActiveRun, Commander, rate_codes
 from osdk_conformance.device.fuzz_cases import MOTION_KINDS, FuzzCase, cases as all_cases
+from osdk_conformance.device.hostload import HostClock
 from osdk_conformance.device.liveness import COMMAND_SEQ_START, Check, Liveness, LivenessOptions
 from osdk_conformance.device.port import PortDown
 
@@ -73,6 +85,15 @@ class Finding:
 
 
 @dataclass
+class NotJudged:
+    """A check that failed on timing alone while this host was busy: no finding."""
+    check: Check
+    after: str
+    host: str
+    replayed: bool   # the replay did not fail (else, a slowed broadcast alone: not replayed)
+
+
+@dataclass
 class SessionOutcome:
     sent: dict[str, int] = field(default_factory=dict)          # cases sent, by kind
     withheld: dict[str, int] = field(default_factory=dict)      # not sent for safety, by kind
@@ -86,6 +107,9 @@ class SessionOutcome:
     stopped: str = ""                        # why the session ended before its budget
     motion: str = "not allowed (--allow-motion not given)"
     case_seconds: float = 0.0               # time spent sending cases and checking (not replays)
+    not_judged: list[NotJudged] = field(default_factory=list)
+    unwell: str = ""                         # failed the same way with no case sent: the session ended there
+    unwell_host: str = ""                    # how busy this host was then ("" when it was not)
 
 
 def sets_frequency(case: FuzzCase) -> bool:
@@ -122,7 +146,7 @@ class PacedPort:
 class FuzzSession:
     def __init__(self, port, an, opts: SessionOptions, cmd: Commander, capture_path=None,
                  restart: Callable[[], str | None] | None = None, interrupts=None,
-                 progress: Callable[[str], None] | None = None) -> None:
+                 progress: Callable[[str], None] | None = None, host: HostClock | None = None) -> None:
         self.an, self.opts, self.cmd = an, opts, cmd
         self.port = PacedPort(port, opts.baud)
         cmd.port = self.port
@@ -140,6 +164,8 @@ class FuzzSession:
         self.recent: list[FuzzCase] = []   # cases sent since the last good check
         self.history: list[FuzzCase] = []  # the last cases sent (for a wider replay)
         self.live_now = False              # the last check or recovery found the device live
+        self.host = host or HostClock()    # how busy this host is (a test gives one of its own)
+        self.since_ok = time.time()        # when the device was last found live
 
     # ---- the session -----------------------------------------------------
 
@@ -224,6 +250,7 @@ class FuzzSession:
             self.live_now = check.ok
             if check.ok:
                 self.recent = []
+                self.since_ok = time.time()
                 continue
             if not self._on_failure(check):
                 return
@@ -275,6 +302,15 @@ class FuzzSession:
     def _on_failure(self, check: Check) -> bool:
         """Confirm and minimise a failed check; False ends the session."""
         suspects, self.recent = self.recent, []
+        # what the check looked back on: the rate window, the stall time-out, two probes
+        lo = self.opts.liveness
+        since = min(self.since_ok, check.t - max(lo.rate_window, lo.stall_timeout, 2 * lo.ack_timeout))
+        busy = self._host_busy(since) if check.timing_only else ""
+        if busy and check.symptoms == ["broadcast_slow"]:
+            # a broadcast still live but slower: what a stand-in FC starved on this host shows; a replay would
+            # only measure how busy the host is
+            self.out.not_judged.append(NotJudged(check, suspects[-1].id, busy, replayed=False))
+            return True
         # One finding per set of symptoms: a device that wedges on every unknown
         # command set would otherwise spend the budget minimising the same bug.
         same = next((f for f in self.out.findings if f.check.symptoms == check.symptoms), None)
@@ -286,12 +322,16 @@ class FuzzSession:
             self.progress(f"finding {same.number} again after {suspects[-1].id}")
             return self._recover() is None or self._stop("the device did not recover after a repeated finding")
         f = Finding(len(self.out.findings) + 1, check, suspects)
-        self.out.findings.append(f)
-        self.progress(f"finding {f.number} after {suspects[-1].id}: {check.describe()}")
         problem = self._recover()
         if problem:
+            self._found(f)
             f.confirmed, f.why_unconfirmed = None, problem
             return self._stop(f"the device did not come back after finding {f.number}: {problem}")
+        if check.timing_only and self._trial(f, [], check):
+            self.out.unwell = (f"after {suspects[-1].id}: {check.describe()}; brought back, it failed the same way "
+                               "with no case sent: not a case's doing")
+            self.out.unwell_host = busy or self._host_busy(since)
+            return self._stop("the device failed its check with no case sent")
         replayed, f.from_capture = self._from_capture(suspects)
         windows = [replayed]
         if len(self.history) > len(suspects):   # the cause may lie further back
@@ -304,6 +344,12 @@ class FuzzSession:
             f.confirmed = False
             f.why_unconfirmed = (f"replaying the last {len(windows[-1])} case(s) from the capture did not fail "
                                  "the check again")
+        if not f.confirmed and busy:
+            self.out.not_judged.append(NotJudged(check, suspects[-1].id, busy, replayed=True))
+            self.progress(f"a check after {suspects[-1].id} failed on timing alone while this host was busy; "
+                          "its cases replayed without failure: no finding")
+            return self._recover() is None or self._stop("the device did not come back after a replay")
+        self._found(f)
         if f.confirmed:
             f.reproducer = self._minimise(f, f.reproducer, check)
         if self._recover() is not None:
@@ -311,6 +357,22 @@ class FuzzSession:
         if len(self.out.findings) >= self.opts.max_findings:
             return self._stop(f"{self.opts.max_findings} findings (--max-findings)")
         return True
+
+    def _found(self, f: Finding) -> None:
+        self.out.findings.append(f)
+        self.progress(f"finding {f.number} after {f.suspects[-1].id}: {f.check.describe()}")
+
+    def _host_busy(self, since: float) -> str:
+        """How this host was busy since `since` (wall time), or "" when it was not:
+        the port's reader not scheduled for HOST_STALL_S or more, or more
+        runnable work than cores."""
+        state = getattr(self.port.port, "state", None)
+        stalls = [s for t, s in (state.host_stalls if state else []) if t + s >= since]
+        load = self.host.load()
+        if not stalls and not load.busy:
+            return ""
+        return ((f"this host did not read the port for up to {max(stalls):.1f} s; " if stalls else "")
+                + load.text())
 
     def _stop(self, why: str) -> bool:
         self.out.stopped = why
@@ -330,6 +392,7 @@ class FuzzSession:
             if self._healthy():
                 self.live.restarted_window()
                 self.live_now = True
+                self.since_ok = time.time()
                 return None
             if time.monotonic() >= end:
                 break
@@ -367,7 +430,9 @@ class FuzzSession:
         return out, all(c.id in writes for c in sent)
 
     def _trial(self, f: Finding, cases: list[FuzzCase], original: Check) -> bool:
-        """Send `cases` to a live device; True when the check fails the same way."""
+        """Send `cases` (none: a control) to a live device; True when the
+        check fails the same way. A slowed broadcast is judged over a whole
+        rate window from the device's recovery."""
         if f.trials >= self.opts.minimise_trials:
             return False
         if not self.live_now and self._recover() is not None:
@@ -381,6 +446,8 @@ class FuzzSession:
         if any(sets_frequency(c) for c in cases):
             self.live.pad(f"padding after {tag}")
             self._restore_rates(tag)
+        if "broadcast_slow" in original.symptoms:
+            self.live.fill_rate_window()
         check = self.live.check(tag)
         self.live_now = check.ok
         return bool(set(check.symptoms) & set(original.symptoms))

@@ -6,6 +6,11 @@ came within `stall_timeout` of the check, and over the last `rate_window`
 seconds the frame rate is within `rate_tolerance` of the configured one
 (the fastest item's rate of the analyzer's current epoch: the profile's
 defaults, --expect-rate, or what an acknowledged set frequency asked for).
+A rate that reads low on the arrival clock is measured again as the device
+sent it: SEQ steps over its own time stamps, when the frames carry them and
+that clock keeps the host's time (Analyzer.fc_clock_trusted). A reader this
+host left unscheduled reads a burst of late frames, or loses some in a full
+buffer; neither is a slower broadcast.
 A harmless command is answered: a version query gets an ACK within
 `ack_timeout` that decodes as the version reply and names the same version
 as before the first case. A device that restarted is caught by its
@@ -32,6 +37,9 @@ SYMPTOMS = {
     "broadcast_slow": "the broadcast slowed below its configured rate",
     "reset": "the device restarted (broadcast SEQ or time stamp went back)",
 }
+# What only arrival times show: a busy host can make them fail (a reader left
+# waiting, a stand-in flight controller starved on the same host).
+TIMED_SYMPTOMS = ("no_ack", "broadcast_stopped", "broadcast_slow")
 PROBE_SESSION = 2
 KEEP_S = 30.0        # seconds of the analyzer's time series a session keeps (checks look back at most rate_window)
 TRIM_EVERY_S = 10.0
@@ -64,6 +72,10 @@ class Check:
     def ok(self) -> bool:
         return not self.symptoms
 
+    @property
+    def timing_only(self) -> bool:
+        return bool(self.symptoms) and all(s in TIMED_SYMPTOMS for s in self.symptoms)
+
     def describe(self) -> str:
         return "; ".join(f"{SYMPTOMS[s]} ({self.details[s]})" if s in self.details else SYMPTOMS[s]
                          for s in self.symptoms) or "live"
@@ -94,6 +106,11 @@ class Liveness:
         with self.an.lock:
             self._bcast_seen = len(self.an.bcast)
             self._ts_back = self.an.findings["time_stamp"].count
+
+    def fill_rate_window(self) -> None:
+        """Wait until the rate is judged again (a rate window since restarted_window)."""
+        while (left := self.window_start + self.opts.rate_window - time.time()) > 0:
+            time.sleep(min(left, 0.1))
 
     def pad(self, comment: str, n: int | None = None) -> None:
         """Zero bytes (never a start byte) enough to finish any frame the
@@ -167,7 +184,7 @@ class Liveness:
                 c.details["bad_ack"] = (f"reply {value.hex()}" if got is None
                                         else f"version {got[0]!r} CRC {got[1]:#010x}, before "
                                              f"{self.version[0]!r} CRC {self.version[1]:#010x}")
-        self._broadcast(c)
+        self.broadcast(c)
         row = self._bin(c.t)
         row[0] += 1
         if c.ack_s is not None:
@@ -189,7 +206,8 @@ class Liveness:
             self._trimmed = now
             self._bcast_seen = max(0, self._bcast_seen - self.an.forget_before(now - KEEP_S))
 
-    def _broadcast(self, c: Check) -> None:
+    def broadcast(self, c: Check) -> None:
+        """The broadcast half of a check: still arriving, at its rate, from a device that did not restart."""
         an, now = self.an, time.time()
         with an.lock:
             new = an.bcast[self._bcast_seen:]
@@ -215,8 +233,32 @@ class Liveness:
             c.details["broadcast_stopped"] = ("no broadcast frame since the start" if last is None
                                               else f"the last broadcast frame came {now - last:.2f} s ago")
         elif expected and now - self.window_start >= self.opts.rate_window:
-            rate = len(window) / self.opts.rate_window
+            rate, clock = len(window) / self.opts.rate_window, "arrival"
+            if rate < expected * (1 - self.opts.rate_tolerance) and (fc := self._fc_rate(window)) is not None:
+                rate, clock = fc, "flight controller time stamp"
             c.details["rate_hz"] = round(rate, 1)
             if rate < expected * (1 - self.opts.rate_tolerance):
                 c.symptoms.append("broadcast_slow")
-                c.details["broadcast_slow"] = f"{rate:.1f} frames/s over {self.opts.rate_window:g} s, configured {expected} Hz"
+                c.details["broadcast_slow"] = (f"{rate:.1f} frames/s over {self.opts.rate_window:g} s on the {clock} "
+                                               f"clock, configured {expected} Hz")
+
+    def _fc_rate(self, window: list[tuple[float, int, int]]) -> float | None:
+        """Frames per second the device sent over `window` (broadcast entries,
+        in arrival order), on its own clock: the SEQ steps from the first to
+        the last frame that carries a time stamp, over the time between those
+        stamps. SEQ steps count the frames this host lost (a reader left
+        unscheduled lets the port's buffer overflow) as sent, which they were.
+        None when fewer than three frames carry a stamp, the clock is not
+        trusted, or the SEQ went back (a restart, judged apart)."""
+        if len(window) < 3 or not self.an.fc_clock_trusted():
+            return None
+        t0, t1 = window[0][0], window[-1][0]
+        with self.an.lock:
+            stamps = [s for s in self.an.fc_stamps if t0 <= s[0] <= t1]
+        if len(stamps) < 3 or stamps[0][2] is None or stamps[-1][2] is None:
+            return None
+        steps = (stamps[-1][1] - stamps[0][1]) & 0xFFFF
+        span = stamps[-1][2] - stamps[0][2]
+        if span <= 0 or not 0 < steps < SEQ_JUMP:
+            return None
+        return steps / span

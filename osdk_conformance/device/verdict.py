@@ -5,7 +5,8 @@ Conformance is what `osdkc run` judges (CONFORMS / DOES NOT CONFORM, only
 there). An acceptance run (`osdkc device`) PASSES or FAILS, is
 INCONCLUSIVE (nothing failed, but this host was too busy to judge some
 checks: device/hostload.withheld), or was INTERRUPTED; a fuzzing session (`osdkc fuzz --port`) FOUND n findings or
-found NOTHING, or was INTERRUPTED (device/fuzz_command.py). Whatever the
+found NOTHING, is INCONCLUSIVE (the FC failed its check with no case sent
+while this host was busy), or was INTERRUPTED (device/fuzz_command.py). Whatever the
 word, the summary line says how many checks ran, passed, failed and were
 skipped, and why the skipped ones were, in a few words (`counts`): a PASS
 with half the checks skipped must not read like a full one, with or
@@ -20,7 +21,7 @@ from typing import Sequence
 from osdk_conformance.harness.report import ERROR, FAIL, PASS, SKIP, XFAIL, XPASS, Result
 
 PASSED, FAILED, INTERRUPTED = "PASS", "FAIL", "INTERRUPTED"   # osdkc device
-INCONCLUSIVE = "INCONCLUSIVE"   # osdkc device: nothing failed, but this host kept checks from being judged
+INCONCLUSIVE = "INCONCLUSIVE"   # nothing failed, but this host kept checks from being judged
 FOUND, NOTHING_FOUND = "FOUND", "NOTHING FOUND"                # osdkc fuzz --port
 
 NAMES_PER_REASON = 3   # check names listed after a skip reason, then "…"
