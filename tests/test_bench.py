@@ -38,6 +38,7 @@ def bench_run(tmp_path_factory):
     return proc, out
 
 
+@pytest.mark.slow
 def test_every_implementation_counts_what_the_generator_wrote(bench_run):
     proc, out = bench_run
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -78,6 +79,7 @@ def test_corpus_values_move_like_a_flight():
     assert all(set(d) >= {"gps_detail", "rtk_detail", "control_info"} for d in data)
 
 
+@pytest.mark.slow
 def test_reports_have_their_shape(bench_run):
     proc, out = bench_run
     result = json.loads((out / "bench.json").read_text())
@@ -97,6 +99,7 @@ def test_reports_have_their_shape(bench_run):
         assert name in proc.stdout
 
 
+@pytest.mark.slow
 def test_markdown_replaces_only_its_block(tmp_path, bench_run):
     _, out = bench_run
     doc = tmp_path / "PERFORMANCE.md"
@@ -186,8 +189,37 @@ def test_reliability_targets_do_not_call_an_unmeasured_part_missed():
     assert verdicts(stand_in_and_fail) == ["MISSED", "met"]
 
 
-# a live simulator answering the fuzzer within its time-outs: with the realtime tests (a run
-# beside the niced CPU-heavy files once found a case unanswered on the healthy simulator)
+def test_fuzz_reliability_targets_count_inconclusive_sessions_but_no_false_finding():
+    from osdk_conformance.bench.fuzz_reliability import summary
+    from osdk_conformance.bench.report import _reliability_targets, _verdict
+
+    none = {"runs": 0, "passed": 0, "active": 0, "passive": 0, "retransmissions": 0, "inconclusive": 0,
+            "false_fails": 0}
+    bugs = {b: {"runs": 20, "found": 20, "missed": []} for b in ("long-frame-hang", "unknown-cmd-silence")}
+    clean = {"cases": 150, "runs": 40, "clean": 37, "inconclusive": 3, "false_findings": 0, "failures": [],
+             "bug_cases": 400, "bugs": bugs}
+    found = {**clean, "clean": 36, "false_findings": 1,
+             "failures": [{"run": "fuzz-healthy-0007", "problems": ["exit 1 (FOUND)"], "kept": "/tmp/x"}]}
+    missed = {**clean, "bugs": {**bugs, "long-frame-hang": {"runs": 20, "found": 19,
+                                                             "missed": [{"seed": 4, "problems": ["exit 0"]}]}}}
+
+    def verdicts(fz, busy=2):
+        rel = {"healthy": none, "faults": {}, "load": {"busy_loops_per_core": busy}, "fuzz": fz}
+        return [_verdict(t["met"]) for t in _reliability_targets(rel)][2:]
+
+    assert verdicts(clean) == ["met", "met"]
+    assert verdicts(clean, busy=0) == ["MISSED", "met"]
+    assert verdicts(found) == ["MISSED", "met"]
+    assert verdicts(missed) == ["met", "MISSED"]
+    assert verdicts({**clean, "runs": 0, "clean": 0, "inconclusive": 0}) == ["not measured", "met"]
+    assert "37 of 40 found nothing, 3 inconclusive (host too busy), 0 with a false finding" in summary(clean)
+    assert "found and confirmed in 39 of 40 sessions; missed: long-frame-hang (seeds 4)" in summary(missed)
+    assert "fuzz-healthy-0007: exit 1 (FOUND)" in summary(found)
+
+
+# a live simulator answering the fuzzer within its time-outs: with the realtime tests (beside the niced
+# CPU-heavy files the simulator, niced with them, is starved: the session ends INCONCLUSIVE, no speed measured)
+@pytest.mark.slow
 @pytest.mark.realtime
 def test_device_fuzz_section_reports_each_baud_rate(tmp_path):
     """The device fuzzer against a healthy simulator over a pty, a few cases at

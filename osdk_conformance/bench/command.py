@@ -22,7 +22,9 @@ Sections (`--only`, default all, in this order):
   other numbers alone.
 - reliability (only when named in --only: it takes about an hour):
   healthy active runs of `osdkc device` that must all pass, and seeded runs
-  of every simulator fault that must all be detected (reliability.py).
+  of every simulator fault that must all be detected (reliability.py); healthy
+  `osdkc fuzz --port` sessions that must find nothing, and seeded sessions
+  against each planted bug that must find it (fuzz_reliability.py).
 
 Nothing here asserts a speed: the numbers are printed, written as JSON
 (--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
@@ -58,7 +60,7 @@ DEFAULTS = {  # (full, --quick)
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
-RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE = 200, 20, 2
+RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE, FUZZ_RUNS, BUG_RUNS = 200, 20, 2, 40, 20
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
@@ -94,6 +96,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help=f"reliability: healthy runs, active and passive in turn (default {RELIABILITY_RUNS})")
     ap.add_argument("--fault-runs", type=non_negative_int, default=FAULT_RUNS, metavar="N",
                     help=f"reliability: seeded runs of each simulator fault (default {FAULT_RUNS})")
+    ap.add_argument("--fuzz-runs", type=non_negative_int, default=FUZZ_RUNS, metavar="N",
+                    help=f"reliability: healthy sessions of osdkc fuzz --port (default {FUZZ_RUNS})")
+    ap.add_argument("--bug-runs", type=non_negative_int, default=BUG_RUNS, metavar="N",
+                    help=f"reliability: seeded fuzz sessions against each planted simulator bug (default {BUG_RUNS})")
     ap.add_argument("--busy-per-core", type=non_negative_int, default=BUSY_PER_CORE, metavar="N",
                     help=f"reliability: busy-loop processes per core for the whole measurement (default "
                          f"{BUSY_PER_CORE}: the machine saturated; 0: idle)")
@@ -141,7 +147,8 @@ def command_line(args: argparse.Namespace) -> str:
     if args.quick:
         parts.append("--quick")
     for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),
-                         ("fault_runs", FAULT_RUNS), ("busy_per_core", BUSY_PER_CORE), ("parallel", 1)):
+                         ("fault_runs", FAULT_RUNS), ("fuzz_runs", FUZZ_RUNS), ("bug_runs", BUG_RUNS),
+                         ("busy_per_core", BUSY_PER_CORE), ("parallel", 1)):
         if getattr(args, opt) != default:
             parts += [f"--{opt.replace('_', '-')}", f"{getattr(args, opt):g}"]
     return " ".join(parts)
@@ -199,7 +206,7 @@ def run_bench(args: argparse.Namespace) -> int:
     if "reliability" in sections:
         _log(f"reliability: {args.runs} healthy active runs, {args.fault_runs} seeded runs of each fault")
         result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.busy_per_core, args.parallel,
-                                                          kinds)
+                                                          kinds, args.fuzz_runs, args.bug_runs)
         result["reliability"]["command"] = command_line(args)
     if "footprint" in sections:
         _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only")

@@ -17,6 +17,9 @@ Fault runs: every fault kind the simulator injects, with seeds 1..N: the
 checks that fault must fail (docs/ACCEPTANCE.md, the simulator's table) fail
 in every run.
 
+Fuzz sessions (fuzz_reliability.py, with --fuzz-runs and --bug-runs): the
+device fuzzer under the same load, healthy and against each planted bug.
+
 Every run is a pair of child processes, exactly as a user runs them; the
 files of a run that went wrong are kept and their directory is printed.
 """
@@ -36,6 +39,7 @@ from pathlib import Path
 from osdk_conformance.core.capture import read_capture
 from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError
 from osdk_conformance.core.wire import commands_sent
+from osdk_conformance.bench import fuzz_reliability
 from osdk_conformance.sim.simulator import BEHIND_S, spawned
 
 OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
@@ -181,9 +185,23 @@ def _batch(jobs: int, tasks: list) -> list[dict]:
         return list(pool.map(lambda t: t(), tasks))
 
 
-def measure(runs: int, fault_runs: int, busy_per_core: int, jobs: int, kinds: list[str] | None = None) -> dict:
+def measure(runs: int, fault_runs: int, busy_per_core: int, jobs: int, kinds: list[str] | None = None,
+            fuzz_runs: int = 0, bug_runs: int = 0) -> dict:
+    t0 = time.monotonic()
     with BusyLoops(busy_per_core) as busy:
         out = _measure(runs, fault_runs, jobs, kinds, f"{busy.count} busy-loop processes")
+        if fuzz_runs or bug_runs:
+            tmp = Path(tempfile.mkdtemp(prefix="osdkc-reliability-fuzz-"))
+            fz = out["fuzz"] = fuzz_reliability.measure(fuzz_runs, bug_runs, tmp, PROFILE, OSDKC, _favour,
+                                                        lambda tasks: _batch(jobs, tasks), _log)
+            if fz["ok"]:
+                shutil.rmtree(tmp, ignore_errors=True)
+            else:   # the sessions that went wrong kept their files there
+                fz["kept_dir"] = str(tmp)
+            out["ok"] = out["ok"] and fz["ok"]
+            if not runs:   # the simulators' priority is then the fuzz sessions'
+                out["simulator_nice"] = SIM_NICE if fz["favoured"] else 0
+        out["seconds"] = round(time.monotonic() - t0, 1)
     out["load"] = {"busy_loops_per_core": busy_per_core, "cores": os.cpu_count() or 1,
                    "load_average_1min_at_end": round(os.getloadavg()[0], 2),
                    "simulator_nice": out.pop("simulator_nice", 0)}
@@ -272,6 +290,10 @@ def summary(rel: dict) -> str:
         missed = [f"{k} (seeds {', '.join(str(m['seed']) for m in f['missed'])})" for k, f in faults.items() if f["missed"]]
         if missed:
             text += "; missed: " + "; ".join(missed)
+    if rel.get("fuzz"):
+        text += "; " + fuzz_reliability.summary(rel["fuzz"])
+        if rel["fuzz"].get("kept_dir"):
+            text += f" (files of the sessions that went wrong: {rel['fuzz']['kept_dir']})"
     if rel.get("kept_dir"):
         text += f"; files of the runs that went wrong: {rel['kept_dir']}"
     return text

@@ -156,7 +156,26 @@ def _reliability_targets(rel: dict | None) -> list[dict]:
             {"target": "each simulator fault kind detected in every one of ≥ 20 seeded runs, under the same load",
              "measured": (f"{len(faults)} kinds: detected in {sum(f['detected'] for f in faults.values())} of "
                           f"{sum(f['runs'] for f in faults.values())} runs") if faults else "not measured",
-             "met": (fault_runs >= 20 and all(not f["missed"] for f in faults.values())) if faults else None}]
+             "met": (fault_runs >= 20 and all(not f["missed"] for f in faults.values())) if faults else None},
+            *_fuzz_reliability_targets(rel.get("fuzz"), busy)]
+
+
+def _fuzz_reliability_targets(fz: dict | None, busy: int) -> list[dict]:
+    if not fz:
+        return []
+    bugs = fz["bugs"]
+    return [{"target": "no false finding in ≥ 20 healthy osdkc fuzz --port sessions, the machine saturated",
+             "measured": (f"{fz['clean']} of {fz['runs']} found nothing, {fz['inconclusive']} inconclusive (host too "
+                          f"busy), {fz['false_findings']} with a false finding, beside {busy} busy loops per core")
+             if fz["runs"] else "not measured",
+             "met": (fz["runs"] >= 20 and busy >= 2 and fz["false_findings"] == 0 and not fz["failures"])
+             if fz["runs"] else None},
+            {"target": "each planted bug found and confirmed by the fuzzer in every one of ≥ 20 seeded sessions, "
+                       "under the same load",
+             "measured": (f"{len(bugs)} bugs: found in {sum(b['found'] for b in bugs.values())} of "
+                          f"{sum(b['runs'] for b in bugs.values())} sessions") if bugs else "not measured",
+             "met": (min(b["runs"] for b in bugs.values()) >= 20 and all(not b["missed"] for b in bugs.values()))
+             if bugs else None}]
 
 
 def _verdict(met) -> str:
@@ -201,7 +220,8 @@ def _others(result: dict) -> list[tuple[str, str, str]]:
             rows.append((f"device fuzzing, {dfz['profile']} simulator over a pty at {r['baud']} baud", r["command"],
                          _device_fuzz_text(r)))
     if rel := result.get("reliability"):
-        rows.append(("reliability of osdkc device: healthy active runs, seeded faults", rel["command"],
+        rows.append(("reliability of osdkc device and osdkc fuzz --port: healthy runs, seeded faults and bugs",
+                     rel["command"],
                      summary(rel) + f" ({rel['seconds']:.0f} s)"))
     return rows
 
