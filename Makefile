@@ -82,9 +82,10 @@ JOBS ?= auto
 test: setup check-generated
 	$(BIN)/python tools/run_tests.py --jobs $(JOBS)
 
-# A fast subset for development: no slow property tests, few examples.
+# A fast subset for development: no test marked slow, few examples, the
+# realtime tests two at a time.
 quick: setup
-	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/python tools/run_tests.py --jobs $(JOBS) --marks 'not slow'
+	OSDK_HYPOTHESIS_PROFILE=dev $(BIN)/python tools/run_tests.py --jobs $(JOBS) --realtime-jobs 2 --marks 'not slow'
 
 # The long property campaign: every hypothesis property of the suite with
 # 10,000 randomized examples each (the suite's own smoke run is 100, fixed), the

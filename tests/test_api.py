@@ -50,6 +50,7 @@ def shown_output(block: str) -> list[str]:
             for line in block.splitlines() if line.strip().startswith("#>")]
 
 
+@pytest.mark.slow
 def test_every_example_of_the_api_page_prints_what_it_shows(tmp_path, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
     blocks = doc_blocks()
@@ -307,6 +308,7 @@ def test_broadcast_floats_keep_their_bits() -> None:
 
 # ---------------------------------------------------------------- control mode and movement control
 
+@pytest.mark.slow
 def test_classify_and_check_answer_every_control_vector_as_the_reference_does() -> None:
     cases = load_cases([VECTORS_DIR / "control_mode.json", VECTORS_DIR / "control_ranges.json"])
     assert {c.operation for c in cases} == {"classify_control_mode", "check_movement_control"}
@@ -374,6 +376,7 @@ for line in sys.stdin:
 '''
 
 
+@pytest.mark.slow
 def test_a_failing_testee_gives_failures_skips_and_coverage(tmp_path) -> None:
     script = tmp_path / "wrong_testee.py"
     script.write_text(WRONG_TESTEE)
@@ -398,6 +401,7 @@ def test_a_failing_testee_gives_failures_skips_and_coverage(tmp_path) -> None:
     assert run.summary().endswith("\n" + run.verdict_line) and "coverage (cases run / available)" in run.summary()
 
 
+@pytest.mark.slow
 def test_a_testee_that_claims_part_of_the_suite_conforms_for_that_part() -> None:
     # the native decoder decodes and does nothing else
     run = api.run_conformance(impl="accel", profiles=["m100-fw2.3"], filter=".worked")

@@ -28,6 +28,8 @@ from osdk_conformance.harness.runner import BUNDLED_IMPLS, impl_argv
 from osdk_conformance.harness.vectors import VECTORS_DIR, load_cases
 
 IMPLS = list(BUNDLED_IMPLS)
+# `make quick` runs the bench mode of the reference implementation; `make test` of every bundled one
+QUICK_ONE_IMPL = [pytest.param(i, marks=() if i == "construct" else pytest.mark.slow) for i in IMPLS]
 PROFILES = ("m100-fw2.3", "a3-fw3.1")  # the two ends: the oldest layout, the newest
 COUNTS = ("bytes", "frames", "errors", "garbage_bytes")
 MIN_STREAM = 64 * 1024 + 1  # more than one read, so that frames straddle a read boundary
@@ -109,7 +111,7 @@ def decode_stream_counts(impl: str, data: bytes, profile: str) -> dict:
             "garbage_bytes": sum(ev["length"] for ev in events if ev["kind"] == "garbage")}
 
 
-@pytest.mark.parametrize("impl", IMPLS)
+@pytest.mark.parametrize("impl", QUICK_ONE_IMPL)
 def test_bench_counts_what_decode_stream_reports(impl, streams):
     for profile, path in streams.items():
         got = bench_of(impl, path, profile)
@@ -131,7 +133,7 @@ def test_implementations_agree(streams):
         assert len({json.dumps(c, sort_keys=True) for c in counts.values()}) == 1, f"{profile}: {counts}"
 
 
-@pytest.mark.parametrize("impl", IMPLS)
+@pytest.mark.parametrize("impl", QUICK_ONE_IMPL)
 def test_bench_reads_stdin(impl, streams):
     profile = "a3-fw3.1"
     path = streams[profile]
@@ -150,7 +152,7 @@ BAD_ARGUMENTS = {
 }
 
 
-@pytest.mark.parametrize("impl", IMPLS)
+@pytest.mark.parametrize("impl", QUICK_ONE_IMPL)
 def test_bad_arguments_exit_2_with_one_line(impl):
     probe = run_bench(impl, *BAD_ARGUMENTS["missing file"])
     skip_if_no_bench_mode(impl, probe)

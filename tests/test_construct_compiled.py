@@ -91,6 +91,7 @@ def vector_inputs():
                             yield osdk_frame(profile), ev.raw, None
 
 
+@pytest.mark.slow
 def test_compiled_parsers_agree_on_every_vector_input():
     seen = valid = 0
     for c, data, is_valid in vector_inputs():

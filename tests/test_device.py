@@ -19,6 +19,7 @@ import pytest
 from osdk_conformance.bench.reliability import FAULT_CASES
 from osdk_conformance.core.rules import profile as load_profile, profile_names
 from osdk_conformance.sim.simulator import spawned
+from collected import needed, scenario
 
 # Measures rates and timing of a live simulator: tools/run_tests.py runs the
 # `realtime` tests one at a time, at a higher priority than the CPU-heavy rest.
@@ -52,6 +53,7 @@ ENV_KEY = {"OSDK_TEST_KEY": KEY}
 # (osdkc bench --only reliability); stall and unplug have tests of their own below.
 FAULTS = {kind: (sim_args, must_fail, seconds) for kind, (sim_args, dev_args, must_fail, seconds) in FAULT_CASES.items()
           if not dev_args and kind not in ("stall", "unplug")}
+QUICK_FAULTS = ("noise", "bad_crc", "jitter", "implausible")   # `make quick`: one of each family
 
 
 def _scenarios(tmp) -> dict[str, tuple[tuple, tuple, dict | None]]:
@@ -90,11 +92,13 @@ def _run(sim_args, dev_args, extra_env):
 
 
 @pytest.fixture(scope="module")
-def runs(tmp_path_factory):
+def runs(request, tmp_path_factory):
+    """The scenarios the selected tests read (their `scenario` marks), three at a time."""
     from concurrent.futures import ThreadPoolExecutor
 
     tmp = tmp_path_factory.mktemp("device")
-    sc = _scenarios(tmp)
+    wanted = needed(request, scenario)
+    sc = {name: args for name, args in _scenarios(tmp).items() if name in wanted}
     with ThreadPoolExecutor(max_workers=3) as pool:
         futures = {name: pool.submit(_run, *args) for name, args in sc.items()}
         out = {name: f.result() for name, f in futures.items()}
@@ -102,7 +106,9 @@ def runs(tmp_path_factory):
     return out
 
 
-@pytest.mark.parametrize("profile", PROFILES)
+@pytest.mark.scenario("motion-{profile}")
+@pytest.mark.parametrize("profile", [p if p == "a3-fw3.1" else pytest.param(p, marks=pytest.mark.slow)
+                                     for p in PROFILES])   # `make quick`: the newest profile
 def test_every_profile_passes_passive_and_active_with_motion(runs, profile):
     _, rc, checks, out = runs[f"motion-{profile}"]
     assert rc == 0, out
@@ -125,6 +131,7 @@ def test_every_profile_passes_passive_and_active_with_motion(runs, profile):
     assert 'name="active.movement"' in (runs["tmp"] / f"{profile}.xml").read_text()
 
 
+@pytest.mark.scenario("no-motion")
 def test_movement_is_not_sent_without_allow_motion(runs):
     _, rc, checks, out = runs["no-motion"]
     assert rc == 0, out
@@ -132,7 +139,8 @@ def test_movement_is_not_sent_without_allow_motion(runs):
     assert "MOVES THE AIRCRAFT" not in out
 
 
-@pytest.mark.parametrize("kind", FAULTS)
+@pytest.mark.scenario("fault-{kind}")
+@pytest.mark.parametrize("kind", [k if k in QUICK_FAULTS else pytest.param(k, marks=pytest.mark.slow) for k in FAULTS])
 def test_each_fault_fails_its_named_check(runs, kind):
     _, rc, checks, out = runs[f"fault-{kind}"]
     assert rc == 1, out
@@ -142,6 +150,7 @@ def test_each_fault_fails_its_named_check(runs, kind):
         assert "--profile m100-fw3.1" in checks["decode.profile"][1]
 
 
+@pytest.mark.scenario("rc-mode-p")
 def test_rc_not_in_f_mode_fails_obtain_control_with_the_reason(runs):
     _, rc, checks, _ = runs["rc-mode-p"]
     assert rc == 1
@@ -149,12 +158,14 @@ def test_rc_not_in_f_mode_fails_obtain_control_with_the_reason(runs):
     assert "not in F mode" in checks["active.control_obtain"][1]
 
 
+@pytest.mark.scenario("wrong-app-id")
 def test_wrong_app_id_fails_activation(runs):
     _, rc, checks, _ = runs["wrong-app-id"]
     assert rc == 1
     assert checks["active.activation"][0] == "FAIL" and "invalid_parameters" in checks["active.activation"][1]
 
 
+@pytest.mark.scenario("aes-tcp")
 def test_aes_encrypted_session_over_tcp(runs):
     url, rc, checks, out = runs["aes-tcp"]
     assert url.startswith("socket://")
@@ -162,6 +173,7 @@ def test_aes_encrypted_session_over_tcp(runs):
     assert checks["active.activation"][0] == "PASS"
 
 
+@pytest.mark.scenario("aes-no-key")
 def test_encrypted_stream_without_key_is_a_decode_failure(runs):
     _, rc, checks, _ = runs["aes-no-key"]
     assert rc == 1
@@ -240,6 +252,7 @@ def test_usage_errors_exit_2():
     assert rc == 2 and "OSDK_SURELY_UNSET_VAR" in out
 
 
+@pytest.mark.slow
 def test_a_saturated_host_does_not_fail_a_healthy_flight_controller():
     """Two busy loops per core (load about twice the cores) while a healthy
     simulator is judged, passive and active: no FAIL, and the jitter verdict

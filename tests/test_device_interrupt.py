@@ -26,6 +26,7 @@ from osdk_conformance.core.capture import read_capture
 from osdk_conformance.device.active import EXIT_BY_SIGNAL, HOLD_ENV, PHASES, RAISE_ENV
 from osdk_conformance.core.wire import commands_sent
 from osdk_conformance.sim.simulator import spawned
+from collected import needed
 
 pytestmark = pytest.mark.realtime
 
@@ -98,22 +99,27 @@ CASES = [(phase, signal.SIGINT if i % 2 == 0 else signal.SIGTERM) for i, phase i
 
 
 @pytest.fixture(scope="module")
-def interrupted(tmp_path_factory):
-    """Every phase interrupted, three runs at a time."""
+def interrupted(request, tmp_path_factory):
+    """Every phase the selected tests look at interrupted, three runs at a time."""
     from concurrent.futures import ThreadPoolExecutor
 
+    wanted = [case for case in CASES if case in needed(request, lambda item: getattr(item, "callspec", None)
+                                                        and item.callspec.params.get("case"))]
     # made here, one after the other: pytest's temporary-directory factory is not thread-safe
-    dirs = {case: tmp_path_factory.mktemp(case[0]) for case in CASES}
+    dirs = {case: tmp_path_factory.mktemp(case[0]) for case in wanted}
 
     def one(case):
         phase, sig = case
         return run_interrupted(dirs[case], [phase], [sig])
 
     with ThreadPoolExecutor(max_workers=3) as pool:
-        return dict(zip(CASES, pool.map(one, CASES)))
+        return dict(zip(wanted, pool.map(one, wanted)))
 
 
-@pytest.mark.parametrize("case", CASES, ids=[f"{p}-{s.name}" for p, s in CASES])
+# `make quick`: a phase before control, and one moving the aircraft
+@pytest.mark.parametrize("case", [pytest.param(c, id=f"{c[0]}-{c[1].name}",
+                                               marks=() if c[0] in ("frequency.window", "movement.attitude") else pytest.mark.slow)
+                                  for c in CASES])
 def test_interrupt_at_each_phase_releases_control_and_restores_rates(interrupted, case):
     phase, sig = case
     r = interrupted[case]
@@ -141,6 +147,7 @@ def test_interrupt_at_each_phase_releases_control_and_restores_rates(interrupted
         assert r["checks"]["active.frequency_restore"][0] == "PASS"
 
 
+@pytest.mark.slow
 def test_signal_during_the_normal_clean_up_finishes_it(tmp_path):
     args = [*ACTIVE]
     args[args.index("--motion-seconds") + 1] = "1.2"   # long enough for the movement check to pass
@@ -200,6 +207,7 @@ def test_an_internal_error_mid_movement_still_releases_control(tmp_path):
     assert_cleaned_up(r)
 
 
+@pytest.mark.slow
 def test_a_port_lost_during_movement_is_released_when_it_comes_back(tmp_path):
     """The lost-port route: the simulator's port goes away for half a second while movement commands stream
     (a symlink keeps its name); the run stops moving, waits for the port, then releases control and restores
@@ -221,7 +229,7 @@ def test_a_port_lost_during_movement_is_released_when_it_comes_back(tmp_path):
     assert_cleaned_up(r)
 
 
-@pytest.mark.parametrize("signals", [[], [signal.SIGINT]], ids=["run-ended", "SIGINT"])
+@pytest.mark.parametrize("signals", [pytest.param([], id="run-ended", marks=pytest.mark.slow), pytest.param([signal.SIGINT], id="SIGINT")])
 def test_a_port_lost_as_the_release_goes_out_is_waited_for_and_control_released(tmp_path, signals):
     """A cable glitch inside the clean-up: the simulator closes its port when the first release request
     arrives, unanswered, and reopens it 1.5 s later, after the next try (3 tries of 1 s after a run that

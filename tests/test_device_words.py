@@ -299,6 +299,7 @@ def test_ctrl_c_at_the_terminal_question_exits_130_with_nothing_sent(tmp_path):
     assert r["stats"]["rx_bytes"] == 0 and r["stats"]["movement_commands"] == 0, r["stats"]
 
 
+@pytest.mark.slow
 @pytest.mark.realtime
 def test_yes_at_the_terminal_runs_the_movement_check(tmp_path):
     r = _device_at_a_terminal(tmp_path, b"yes\n")

@@ -38,6 +38,7 @@ def validator():
     return Draft202012Validator(json.loads(SCHEMA.read_text()))
 
 
+@pytest.mark.slow
 def test_bundled_implementations_agree():
     # Bounded to keep the suite fast. A longer run once found a real
     # disagreement (two header rules broken at once: aa0c0020200000000000892c);
@@ -57,6 +58,7 @@ def test_bundled_implementations_agree():
 
 
 # the seeds: the first (of 1 to 6) under which the search finds that mutant soonest (lat/lon: 6 s; 15 to 22 s else)
+@pytest.mark.slow
 @pytest.mark.parametrize("name, op_hint, seed", [("position_lat_lon_swapped", "latitude", "2"),
                                                  ("crc16_init_ffff", "crc", "3")])
 def test_a_mutant_is_found_and_the_vector_replays(name, op_hint, seed, tmp_path):
@@ -82,6 +84,7 @@ def test_a_mutant_is_found_and_the_vector_replays(name, op_hint, seed, tmp_path)
     assert test["id"] in bad.stdout
 
 
+@pytest.mark.slow
 def test_a_seed_replays_the_same_minimal_example(tmp_path):
     outs = []
     for k in range(2):
@@ -93,6 +96,7 @@ def test_a_seed_replays_the_same_minimal_example(tmp_path):
     assert outs[0] == outs[1]
 
 
+@pytest.mark.slow
 def test_crashing_testee_is_a_disagreement(tmp_path):
     out = tmp_path / "case.json"
     proc = osdkc("fuzz", "--impl", "construct", "--testee", mutant("crash_on_aes"), "--op", "decode_frame",

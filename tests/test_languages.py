@@ -52,6 +52,7 @@ def test_c_unit_tests_pass_plain_and_under_asan_ubsan():
     assert "runtime error" not in out and "AddressSanitizer" not in out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("compiler", ["gcc", CLANG])
 def test_c_decoder_compiles_without_warnings(compiler, tmp_path):
     if shutil.which(compiler) is None:

@@ -169,6 +169,7 @@ def test_features_list_every_file():
     assert not set(by_name["deframer (receiver)"]["files"]) & set(info["stdio"])
 
 
+@pytest.mark.slow
 def test_the_kept_file_features_are_what_the_objects_say():
     """libgen keeps each file's dependencies under .cache/ by the hash of what
     they follow from; measured again from fresh objects, they are the same."""

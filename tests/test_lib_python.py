@@ -58,6 +58,7 @@ def _run(site: Path, args: list[str], stdin: bytes = b"") -> subprocess.Complete
     return subprocess.run([sys.executable, *args], input=stdin, capture_output=True, env=env, timeout=60)
 
 
+@pytest.mark.slow
 def test_pip_installs_the_package(tmp_path: Path) -> None:
     src = tmp_path / "src"
     shutil.copytree(ROOT / "generated" / "python", src, ignore=shutil.ignore_patterns("__pycache__"))

@@ -18,7 +18,8 @@ from osdk_conformance._construct.floats import F32, F64
 SECONDS = 20  # of each corpus, the length test_accel.py reads too: every message type, item rates down to 1 Hz, line faults
 
 
-@pytest.mark.parametrize("name", list(CORPORA))
+# `make quick` leaves out the hour-long corpus
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n == "a3-hour" else n for n in CORPORA])
 def test_every_event_of_a_corpus_has_the_generic_model(name):
     spec = CORPORA[name]
     with open(corpus(name, seconds=SECONDS).path, "rb") as f:

@@ -285,6 +285,7 @@ def _run_altered_reference(tmp_path, alter: str):
                           capture_output=True, text=True, cwd=ROOT, timeout=120)
 
 
+@pytest.mark.slow
 def test_a_run_reports_schema_violations_in_its_failure_table(tmp_path):
     proc = _run_altered_reference(tmp_path, "if res.get('ok') and 'fields' in res['result']:\n"
                                             "    res['result']['note'] = 'not in the schema'")
@@ -321,6 +322,7 @@ def test_protocol_md_combination_table_is_the_rules():
                        limits(rng["horizontal"]), limits(rng["vertical"]), limits(rng["yaw"])), row
 
 
+@pytest.mark.slow
 def test_a_capabilities_answer_that_breaks_its_schema_fails_the_run_but_lets_it_go_on(tmp_path):
     proc = _run_altered_reference(tmp_path, "if req['op'] == 'capabilities':\n    res['result']['version'] = 2")
     assert proc.returncode == 1, proc.stdout + proc.stderr

@@ -30,6 +30,7 @@ def run(args: list[str], **kw) -> subprocess.CompletedProcess[str]:
     return subprocess.run([sys.executable, str(RUNNER), *args], capture_output=True, text=True, timeout=120, **kw)
 
 
+@pytest.mark.slow
 def test_both_parts_run_side_by_side_and_the_realtime_output_comes_last(tmp_path):
     args = suite(tmp_path, (
         "@pytest.mark.realtime\n"
@@ -47,6 +48,7 @@ def test_both_parts_run_side_by_side_and_the_realtime_output_comes_last(tmp_path
     assert quick.returncode == 0 and "1 passed" in rest and "1 passed, 2 deselected" in realtime
 
 
+@pytest.mark.slow
 def test_a_failure_in_either_part_fails_the_run(tmp_path):
     for body in ("@pytest.mark.realtime\ndef test_timing():\n    assert False\n\ndef test_work():\n    pass\n",
                  "@pytest.mark.realtime\ndef test_timing():\n    pass\n\ndef test_work():\n    assert False\n"):
@@ -55,7 +57,8 @@ def test_a_failure_in_either_part_fails_the_run(tmp_path):
         assert "1 failed" in proc.stdout and "Traceback" not in proc.stderr
 
 
-@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM], ids=["ctrl-c-to-the-group", "sigterm-to-the-runner"])
+@pytest.mark.parametrize("sig", [pytest.param(signal.SIGINT, id="ctrl-c-to-the-group"),
+                                 pytest.param(signal.SIGTERM, id="sigterm-to-the-runner", marks=pytest.mark.slow)])
 def test_a_signal_stops_both_parts(tmp_path, sig):
     """A Ctrl-C reaches the terminal's whole process group; a SIGTERM (a CI
     job cancelled) may reach the runner alone, which passes it on. The

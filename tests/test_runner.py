@@ -118,6 +118,7 @@ def test_status_section_of_generated_readme_is_rendered_from_a_run(tmp_path):
 
 # ---- failure list ----------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_a_listed_case_that_passes_fails_the_run(cases, tmp_path):
     case_id = next(c.id for c in cases if c.operation == "classify_control_mode")
     flist = tmp_path / "failures.txt"
@@ -177,10 +178,10 @@ def test_failure_list_syntax(tmp_path):
 # ---- misbehaving testees ---------------------------------------------------------------
 
 @pytest.mark.parametrize("name, kind, extra", [
-    ("sleeper", "testee_timeout", ["--timeout", "0.5"]),
+    pytest.param("sleeper", "testee_timeout", ["--timeout", "0.5"], marks=pytest.mark.slow),
     ("exit_first", "testee_crash", []),
     ("garbage", "testee_garbage", []),
-    ("memory_hog", "testee_oom", ["--memory-mb", "256"]),
+    pytest.param("memory_hog", "testee_oom", ["--memory-mb", "256"], marks=pytest.mark.slow),
 ])
 def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, name, kind, extra):
     vec, ids = subset(cases, tmp_path, "decode_frame", 3)
@@ -196,6 +197,7 @@ def test_misbehaving_testees_are_recorded_and_the_run_finishes(cases, tmp_path, 
     assert all(f'id="case-{i}"' in page.read_text() for i in ids)
 
 
+@pytest.mark.slow
 def test_misbehaving_testee_in_a_filtered_run_of_the_real_vectors(cases):
     case_id = next(c.id for c in cases if c.operation == "decode_frame")
     proc = osdkc("run", "--testee", command_for("sleeper"), "--filter", case_id, "--timeout", "0.3", "--quiet")
@@ -214,6 +216,7 @@ def test_a_testee_that_keeps_failing_ends_the_run(cases, tmp_path):
     assert root.get("errors") == str(len(ids) - 6)  # not run
 
 
+@pytest.mark.slow
 def test_a_testee_that_does_not_start_is_a_usage_error():
     proc = osdkc("run", "--testee", "/nonexistent/testee --flag", "--quiet")
     assert proc.returncode == 2
@@ -338,7 +341,7 @@ def _group_members(pgid: int) -> list[int]:
     return members
 
 
-@pytest.mark.parametrize("signame", ["SIGINT", "SIGTERM"])
+@pytest.mark.parametrize("signame", ["SIGINT", pytest.param("SIGTERM", marks=pytest.mark.slow)])
 def test_an_interrupted_run_writes_partial_reports_and_leaves_no_testee(cases, tmp_path, signame):
     import os
     import signal
@@ -467,6 +470,7 @@ def readme_testee(tmp_path: Path) -> str:
     return f"{sys.executable} {mine}"
 
 
+@pytest.mark.slow
 def test_the_readme_example_testee_conforms(cases, tmp_path):
     xml = tmp_path / "r.xml"
     proc = osdkc("run", "--testee", readme_testee(tmp_path), "--quiet", "--junit", str(xml))
@@ -555,6 +559,7 @@ def test_every_bundled_implementation_has_a_reviewed_failure_list() -> None:
         assert read_failure_list(path) == {}, f"{path}: every bundled implementation conforms, so its list is empty"
 
 
+@pytest.mark.slow
 def test_impl_is_repeatable_and_runs_the_chosen_implementations_side_by_side(tmp_path: Path) -> None:
     proc = osdkc("run", "--impl", "construct", "--impl", "kaitai-python", "--filter", "worked",
                  "--report-dir", str(tmp_path), "--quiet")

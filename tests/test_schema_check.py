@@ -68,6 +68,7 @@ def _broken(doc: dict, rng: random.Random) -> dict:
     return doc
 
 
+@pytest.mark.slow
 def test_damaged_vector_files_get_jsonschemas_verdict_and_messages(vector_check, documents):
     fast, authority = vector_check
     rng = random.Random(7)
@@ -86,6 +87,7 @@ def test_responses_the_compiled_validator_cannot_take_go_to_jsonschema():
         assert bool(list(check.iter_errors(response))) == (not want)
 
 
+@pytest.mark.slow
 def test_every_expected_answer_and_broken_ones_agree_with_jsonschema():
     rng = random.Random(11)
     cases = load_cases()

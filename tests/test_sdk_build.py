@@ -281,6 +281,7 @@ def test_no_compiler_is_exit_2_naming_it(tmp_path, capsys, monkeypatch):
     assert_one_line_usage_error(code, err, "no C++ compiler: no-such-c++-compiler not found (set CXX)")
 
 
+@pytest.mark.slow
 def test_sdk_test_runs_both_variants_and_reports_what_ran(tmp_path, capsys, monkeypatch, cache):
     monkeypatch.setattr(testee_build, "FAMILIES", (fake_family(),))
     tree = fake_sdk(tmp_path / "sdk")
@@ -300,6 +301,7 @@ def test_sdk_test_runs_both_variants_and_reports_what_ran(tmp_path, capsys, monk
         assert "How error classes were derived" in Path(sdk_test.variant_path(str(page), asan)).read_text()
 
 
+@pytest.mark.slow
 def test_a_sanitizer_crash_is_a_testee_crash_with_its_finding(tmp_path, capsys, monkeypatch, cache):
     adapter = tmp_path / "overflow_adapter.c"
     adapter.write_text(OVERFLOW)
@@ -331,6 +333,7 @@ sys.exit(cli.main(["sdk", "test", "--osdk", str(tree), "--out", str(out), "--qui
 """
 
 
+@pytest.mark.slow
 def test_sigint_reports_what_ran_and_exits_130(tmp_path, cache):
     adapter = tmp_path / "slow_adapter.c"
     adapter.write_text(SLOW)

@@ -175,6 +175,7 @@ def test_interleave_keeps_every_case_once():
     assert {(c.category, c.operation, c.profile) for c in ordered[:len(groups)]} == groups
 
 
+@pytest.mark.slow
 def test_one_mutant_through_osdkc_run():
     """A mutant testee is an ordinary testee: `osdkc run` says it does not conform."""
     proc = osdkc("run", "--testee", f"{sys.executable} {MUTANT_TESTEE} position_lat_lon_swapped",

@@ -137,6 +137,7 @@ def test_arguments_without_a_bench_mode_are_a_usage_error(probe):
     assert done.returncode == 2 and "no arguments expected" in done.stderr
 
 
+@pytest.mark.slow
 def test_the_example_conforms_for_what_it_claims():
     subprocess.run(["make", "-s", "-C", str(KIT), "example"], check=True, capture_output=True, text=True)
     done = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "run", "--testee",

@@ -48,6 +48,7 @@ def test_a_testee_whose_import_fails_is_a_start_up_error(tmp_path: Path) -> None
     assert "memory" not in line and "JVM" not in line
 
 
+@pytest.mark.slow
 def test_the_memory_hint_comes_with_a_jvm_that_could_not_reserve_its_heap(tmp_path: Path) -> None:
     proc, _ = run(tmp_path, JVM_RESERVE)
     assert proc.returncode == 2, proc.stdout + proc.stderr
@@ -57,6 +58,7 @@ def test_the_memory_hint_comes_with_a_jvm_that_could_not_reserve_its_heap(tmp_pa
     assert unlimited.returncode == 2 and "--memory-mb" not in unlimited.stderr
 
 
+@pytest.mark.slow
 def test_a_testee_that_never_answers_its_first_request(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(supervision, "STARTUP_SECONDS", 0.2)
     cases = [c for c in load_cases() if "worked" in c.id]
@@ -69,6 +71,7 @@ def test_a_testee_that_never_answers_its_first_request(monkeypatch: pytest.Monke
         hanging.close()
 
 
+@pytest.mark.slow
 def test_the_api_raises_for_a_testee_that_does_not_start(tmp_path: Path) -> None:
     script = tmp_path / "testee.py"
     script.write_text(f"import {MISSING}\n")

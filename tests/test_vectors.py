@@ -71,6 +71,7 @@ def test_manifest_lists_every_file_with_its_hash():
         assert hashlib.sha256((VECTORS_DIR / name).read_bytes()).hexdigest() == digest, name
 
 
+@pytest.mark.slow
 def test_vectors_coverage_passes():
     proc = osdkc("vectors", "coverage")
     assert proc.returncode == 0, proc.stdout + proc.stderr
@@ -329,6 +330,7 @@ def test_requests_carry_the_profile_only_where_the_operation_takes_one(cases):
         assert ("profile" in req) == (c.operation not in reference.PROFILE_FREE)
 
 
+@pytest.mark.slow
 def test_every_errata_entry_names_a_vector_that_exists_and_pins_it():
     import re
 

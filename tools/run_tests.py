@@ -5,9 +5,10 @@ The `realtime` tests judge a live simulator's timing and spend most of their
 time waiting for it; the rest are CPU work. Run one after the other on two
 cores, the CPU idles through the realtime part. So both start together:
 
-- the realtime tests one at a time, at normal priority, their output kept in
-  a log that is printed when the other part has finished (two outputs
-  interleaved line by line would be unreadable);
+- the realtime tests one at a time (or `--realtime-jobs` at a time), at
+  normal priority, their output kept in a log that is printed when the
+  other part has finished (two outputs interleaved line by line would be
+  unreadable);
 - everything else spread over the cores by pytest-xdist at nice 10, so the
   scheduler gives a realtime test the CPU whenever it wants it, and the rest
   gets what it leaves. A realtime test therefore runs beside busy processes
@@ -45,6 +46,9 @@ def _lower_priority() -> None:
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--jobs", default="auto", help="pytest-xdist workers for the non-realtime part")
+    ap.add_argument("--realtime-jobs", type=int, default=1,
+                    help="realtime tests at a time (default 1; `make quick` runs 2: faster, and each one then "
+                         "shares the machine with another live simulator)")
     ap.add_argument("--marks", default="", help="a further pytest -m expression for both parts, e.g. 'not slow'")
     ap.add_argument("pytest_args", nargs="*", help="passed to both runs (after --)")
     args = ap.parse_args(argv)
@@ -57,7 +61,8 @@ def main(argv: list[str] | None = None) -> int:
     with tempfile.TemporaryDirectory(prefix="osdk-tests-") as tmp:
         log_path = Path(tmp) / "realtime.log"
         with open(log_path, "wb") as log:
-            realtime = subprocess.Popen([*PYTEST, "-m", f"realtime{both}", *args.pytest_args], cwd=ROOT,
+            spread = ["-n", str(args.realtime_jobs), "--dist", "loadfile"] if args.realtime_jobs > 1 else []
+            realtime = subprocess.Popen([*PYTEST, *spread, "-m", f"realtime{both}", *args.pytest_args], cwd=ROOT,
                                         stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
                                         process_group=0)
         rest = subprocess.Popen([*PYTEST, "-n", args.jobs, "--dist", "loadfile", "-m", f"not realtime{both}",
