@@ -46,6 +46,11 @@ def test_both_parts_run_side_by_side_and_the_realtime_output_comes_last(tmp_path
     quick = run(["--marks", "not slow", *args])
     rest, _, realtime = quick.stdout.partition("---- realtime tests")
     assert quick.returncode == 0 and "1 passed" in rest and "1 passed, 2 deselected" in realtime
+    # two realtime tests at a time: pytest-xdist's workers, each at normal priority
+    two = run(["--realtime-jobs", "2", *args])
+    rest, _, realtime = two.stdout.partition("---- realtime tests")
+    assert two.returncode == 0 and "bringing up nodes" in realtime and "1 passed" in realtime, two.stdout
+    assert int((tmp_path / "nice-realtime").read_text()) == realtime_nice
 
 
 @pytest.mark.slow
