@@ -367,8 +367,10 @@ def test_a_fuzzer_stopped_by_its_host_makes_no_finding(tmp_path):
     broadcasting. Before, 2 sessions in 3 reported FOUND 1, "the broadcast
     slowed", NOT confirmed: the frames lost in the full pty meanwhile were
     counted as frames the FC did not send."""
-    with spawned("--baud", "921600") as (url, _):
-        proc = subprocess.Popen(CLI + ["--port", url, "--profile", PROFILE, "--baud", "921600", "--seconds", "7",
+    # at the default 230400 baud: at 921600 the simulator, beside the suite's other work, once read the cases
+    # more slowly than the paced writes came, and a write timed out: a port error, not what this test is about
+    with spawned() as (url, _):
+        proc = subprocess.Popen(CLI + ["--port", url, "--profile", PROFILE, "--seconds", "7",
                                        "--seed", "1", "--no-capture", "-q"],
                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
         time.sleep(2.5)   # started (about 0.5 s) and fuzzing
