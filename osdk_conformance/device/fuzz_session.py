@@ -344,6 +344,9 @@ class FuzzSession:
             f.confirmed = False
             f.why_unconfirmed = (f"replaying the last {len(windows[-1])} case(s) from the capture did not fail "
                                  "the check again")
+        # asked again: a reader that was stopped with the rest of this process records its stall only once it
+        # runs again, which may be after the check that the stall failed
+        busy = busy or (self._host_busy(since) if check.timing_only else "")
         if not f.confirmed and busy:
             self.out.not_judged.append(NotJudged(check, suspects[-1].id, busy, replayed=True))
             self.progress(f"a check after {suspects[-1].id} failed on timing alone while this host was busy; "

@@ -17,6 +17,7 @@ from osdk_conformance.core.errors import UsageError, one_line
 # A reader loop that came round this much later than its read timeout was not
 # scheduled: bytes may have piled up, and been lost, in buffers on this host.
 HOST_STALL_S = 0.5
+WRITE_TIMEOUT_S = 1.0
 
 
 @dataclass
@@ -47,7 +48,7 @@ class Port:
         self.critical = contextlib.nullcontext
 
     def _open(self):
-        return serial.serial_for_url(self.url, baudrate=self.baud, timeout=0.05, write_timeout=1.0)
+        return serial.serial_for_url(self.url, baudrate=self.baud, timeout=0.05, write_timeout=WRITE_TIMEOUT_S)
 
     def open(self, start: bool = True) -> None:
         """Open the port and (unless `start` is False) start reading."""
@@ -115,9 +116,16 @@ class Port:
             if self.cap:
                 self.cap.tx(data, ts, comment)
             self.an.feed_tx(ts / 1e9, data)
+            t0 = time.monotonic()
             try:
                 self.ser.write(data)
             except Exception as e:
+                late = time.monotonic() - t0 - WRITE_TIMEOUT_S
+                if isinstance(e, serial.SerialTimeoutException) and late > HOST_STALL_S:
+                    # pyserial writes, then finds its deadline gone: this process was not scheduled for longer
+                    # than the time-out, and the bytes went out meanwhile. A stall of this host, not of the port.
+                    self.state.host_stalls.append((time.time() - (time.monotonic() - t0), late))
+                    return
                 if not isinstance(e, serial.SerialTimeoutException):   # a slow reader is not a lost port
                     self.failed = self.ser
                 raise PortDown(one_line(e)) from None
