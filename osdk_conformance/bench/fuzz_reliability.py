@@ -20,15 +20,13 @@ of one that went wrong are kept.
 """
 from __future__ import annotations
 
-import json
 import re
 import shutil
-import subprocess
 from pathlib import Path
 
-from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError
+from osdk_conformance.bench import stand_in
+from osdk_conformance.core.errors import EXIT_INCONCLUSIVE
 from osdk_conformance.sim.bugs import BUGS
-from osdk_conformance.sim.simulator import spawned
 
 FUZZ_CASES = 150
 BUG_CASES = 400          # the tests find each bug within about 120 cases (six rounds of the kinds)
@@ -36,31 +34,17 @@ SESSION_TIMEOUT = 300.0
 SUMMARY = re.compile(r"^osdkc fuzz: ([A-Z][A-Z ]*[A-Z])\b", re.M)
 
 
-def _session(name: str, tmp: Path, sim_args: tuple[str, ...], fuzz_args: tuple[str, ...], osdkc: list[str],
-             favour, restart: bool = False) -> dict:
+def _session(name: str, tmp: Path, sim_args: tuple[str, ...], fuzz_args: tuple[str, ...],
+             restart: bool = False) -> dict:
     run_dir = tmp / name
-    run_dir.mkdir(parents=True, exist_ok=True)
-    stats = run_dir / "sim-stats.json"
-    try:
-        with spawned(*sim_args, "--stats", str(stats)) as (url, sim):
-            favoured = favour(sim.pid)
-            extra = ("--restart-cmd", f"kill -HUP {sim.pid}") if restart else ()
-            proc = subprocess.run([*osdkc, "fuzz", "--port", url, "--capture", str(run_dir / "capture.pcapng"),
-                                   "--findings-dir", str(run_dir / "findings"), "-q", *fuzz_args, *extra],
-                                  capture_output=True, text=True, timeout=SESSION_TIMEOUT)
-            code, out = proc.returncode, proc.stdout + proc.stderr
-    except subprocess.TimeoutExpired as e:
-        favoured, code, out = False, None, f"timed out after {SESSION_TIMEOUT:g} s: {e.stdout or ''}"
-    except UsageError as e:
-        favoured, code, out = False, None, str(e)
-    (run_dir / "fuzz-output.txt").write_text(out)
-    try:
-        sim_stats = json.loads(stats.read_text())
-    except (OSError, ValueError):
-        sim_stats = {}
-    word = SUMMARY.search(out)
-    return {"name": name, "dir": run_dir, "code": code, "out": out, "word": word[1] if word else None,
-            "stats": sim_stats, "traceback": "Traceback" in out, "favoured": favoured}
+
+    def command(url: str, pid: int) -> list[str]:
+        return ["fuzz", "--port", url, "--capture", str(run_dir / "capture.pcapng"), "--findings-dir",
+                str(run_dir / "findings"), "-q", *fuzz_args, *(("--restart-cmd", f"kill -HUP {pid}") if restart else ())]
+    r = stand_in.run(run_dir, sim_args, command, SESSION_TIMEOUT, "fuzz-output.txt")
+    word = SUMMARY.search(r.out)
+    return {"name": name, "dir": run_dir, "code": r.code, "out": r.out, "word": word[1] if word else None,
+            "stats": r.stats, "traceback": "Traceback" in r.out, "favoured": r.favoured}
 
 
 def healthy_problems(r: dict) -> list[str]:
@@ -87,7 +71,7 @@ def bug_problems(r: dict) -> list[str]:
     return bad
 
 
-def measure(runs: int, bug_runs: int, tmp: Path, profile: str, osdkc: list[str], favour, batch, log) -> dict:
+def measure(runs: int, bug_runs: int, tmp: Path, profile: str, batch, log) -> dict:
     """`runs` healthy sessions and `bug_runs` seeded sessions per planted bug,
     `batch(tasks)` running them (some at a time)."""
     out: dict = {"cases": FUZZ_CASES, "runs": runs, "bug_cases": BUG_CASES, "bugs": {}}
@@ -95,7 +79,7 @@ def measure(runs: int, bug_runs: int, tmp: Path, profile: str, osdkc: list[str],
     def healthy(i: int):
         def one() -> dict:
             r = _session(f"fuzz-healthy-{i:04d}", tmp, ("--profile", profile, "--seed", str(i)),
-                         ("--profile", profile, "--cases", str(FUZZ_CASES), "--seed", str(i)), osdkc, favour)
+                         ("--profile", profile, "--cases", str(FUZZ_CASES), "--seed", str(i)))
             r["problems"] = healthy_problems(r)
             log(f"{r['name']}: {'; '.join(r['problems']) or r['word']}")
             return r
@@ -117,7 +101,7 @@ def measure(runs: int, bug_runs: int, tmp: Path, profile: str, osdkc: list[str],
         tasks = [lambda s=seed, b=bug: _session(f"fuzz-bug-{b}-{s:03d}", tmp, ("--profile", profile, "--seed", str(s),
                                                                                  "--bug", b),
                                                  ("--profile", profile, "--cases", str(BUG_CASES), "--seed", str(s),
-                                                  "--max-findings", "1"), osdkc, favour, restart=True)
+                                                  "--max-findings", "1"), restart=True)
                  for seed in range(1, bug_runs + 1)]
         missed = []
         for seed, r in enumerate(batch(tasks), start=1):

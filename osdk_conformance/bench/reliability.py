@@ -25,7 +25,6 @@ files of a run that went wrong are kept and their directory is printed.
 """
 from __future__ import annotations
 
-import json
 import os
 import re
 import shutil
@@ -37,12 +36,12 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from osdk_conformance.core.capture import read_capture
-from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError
+from osdk_conformance.core.errors import EXIT_INCONCLUSIVE
 from osdk_conformance.core.wire import commands_sent
-from osdk_conformance.bench import fuzz_reliability
-from osdk_conformance.sim.simulator import BEHIND_S, spawned
+from osdk_conformance.bench import fuzz_reliability, stand_in
+from osdk_conformance.bench.stand_in import SIM_NICE
+from osdk_conformance.sim.simulator import BEHIND_S
 
-OSDKC = [sys.executable, "-m", "osdk_conformance.cli"]
 LINE = re.compile(r"^(PASS|FAIL|SKIP|ERROR)\s+(\S+)\s+(.*)$", re.M)
 PROFILE, APP_ID = "a3-fw3.1", "1234"
 # Short steps, as in the tests' active scenario; the default limits.
@@ -77,49 +76,22 @@ def _log(text: str) -> None:
     print(f"osdkc bench: reliability: {text}", file=sys.stderr, flush=True)
 
 
-# The simulator stands in for a flight controller, which has a CPU of its own:
-# it runs above the busy loops where this user may raise a priority, so that
-# what is measured is the judge on a saturated host, not a starved stand-in.
-SIM_NICE = -5
-
-
 STAND_IN_BEHIND = ("the simulator itself fell more than {:g} s behind its schedule and skipped {} frames: "
                    "no healthy stand-in for a flight controller")
-
-
-def _favour(pid: int) -> bool:
-    try:
-        os.setpriority(os.PRIO_PROCESS, pid, SIM_NICE)
-        return True
-    except OSError:   # not permitted: the stand-in shares the host's fate, and its stats say when it fell behind
-        return False
 
 
 def _pair(name: str, tmp: Path, sim_args: tuple[str, ...], dev_args: tuple[str, ...]) -> dict:
     """One `osdkc sim` and one `osdkc device` against it: exit status, checks, simulator statistics."""
 
     run_dir = tmp / name
-    run_dir.mkdir(parents=True, exist_ok=True)
-    stats, cap = run_dir / "sim-stats.json", run_dir / "capture.pcapng"
+    cap = run_dir / "capture.pcapng"
     extra = ("--link", str(run_dir / "tty")) if "--unplug-at" in sim_args else ()
-    try:
-        with spawned(*sim_args, *extra, "--stats", str(stats)) as (url, sim):
-            favoured = _favour(sim.pid)
-            proc = subprocess.run([*OSDKC, "device", "--port", url, "--capture", str(cap), *dev_args],
-                                  capture_output=True, text=True, timeout=RUN_TIMEOUT)
-            code, out = proc.returncode, proc.stdout + proc.stderr
-    except subprocess.TimeoutExpired as e:
-        favoured, code, out = False, None, f"timed out after {RUN_TIMEOUT:g} s: {e.stdout or ''}"
-    except UsageError as e:   # the simulator did not start: this run went wrong, the next ones still count
-        favoured, code, out = False, None, str(e)
-    (run_dir / "device-output.txt").write_text(out)
-    try:
-        sim_stats = json.loads(stats.read_text())
-    except (OSError, ValueError):
-        sim_stats = {}
-    checks = {m.group(2): m.group(1) for m in LINE.finditer(out)}
-    return {"name": name, "dir": run_dir, "code": code, "checks": checks, "stats": sim_stats, "capture": cap,
-            "traceback": "Traceback" in out, "sim_favoured": favoured}
+    r = stand_in.run(run_dir, (*sim_args, *extra), lambda url, _: ["device", "--port", url, "--capture", str(cap),
+                                                                    *dev_args],
+                     RUN_TIMEOUT, "device-output.txt")
+    checks = {m.group(2): m.group(1) for m in LINE.finditer(r.out)}
+    return {"name": name, "dir": run_dir, "code": r.code, "checks": checks, "stats": r.stats, "capture": cap,
+            "traceback": "Traceback" in r.out, "sim_favoured": r.favoured}
 
 
 def retransmissions(capture: Path) -> int:
@@ -192,7 +164,7 @@ def measure(runs: int, fault_runs: int, busy_per_core: int, jobs: int, kinds: li
         out = _measure(runs, fault_runs, jobs, kinds, f"{busy.count} busy-loop processes")
         if fuzz_runs or bug_runs:
             tmp = Path(tempfile.mkdtemp(prefix="osdkc-reliability-fuzz-"))
-            fz = out["fuzz"] = fuzz_reliability.measure(fuzz_runs, bug_runs, tmp, PROFILE, OSDKC, _favour,
+            fz = out["fuzz"] = fuzz_reliability.measure(fuzz_runs, bug_runs, tmp, PROFILE,
                                                         lambda tasks: _batch(jobs, tasks), _log)
             if fz["ok"]:
                 shutil.rmtree(tmp, ignore_errors=True)
