@@ -15,7 +15,7 @@ JS_OK  := tools/ksc/node_modules/.installed
 # every module it imports from source again.
 unexport PYTHONDONTWRITEBYTECODE
 
-.PHONY: setup system-packages testees examples kit test quick properties regen check-generated vectors bench fuzz clean
+.PHONY: setup system-packages testees examples kit test quick properties memory regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
@@ -94,6 +94,12 @@ PROPERTY_TESTS := tests/test_kaitai_vs_construct.py tests/test_crc.py tests/test
                   tests/test_deframe.py tests/test_stream_properties.py tests/test_construct_compiled.py
 properties: setup
 	OSDK_HYPOTHESIS_PROFILE=campaign $(BIN)/pytest -q -n $(JOBS) --dist loadfile $(PROPERTY_TESTS)
+
+# The memory campaign: every implementation's peak RSS on every hostile stream,
+# short against long, and a gibibyte through each (tests/test_bounded_memory.py;
+# the suite runs a smoke subset of it). About 3 minutes on 2 cores.
+memory: setup
+	OSDK_MEMORY_CAMPAIGN=1 $(BIN)/pytest -q -n $(JOBS) tests/test_bounded_memory.py
 
 # Benchmarks (docs/PERFORMANCE.md): every section, the full corpora; rewrites
 # the results block of docs/PERFORMANCE.md. Takes tens of minutes.

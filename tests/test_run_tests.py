@@ -22,7 +22,8 @@ INI = "[pytest]\nmarkers =\n    realtime: timing\n    slow: slow\n"
 def suite(tmp_path: Path, body: str) -> list[str]:
     (tmp_path / "pytest.ini").write_text(INI)
     (tmp_path / "test_small.py").write_text("import os, time\nimport pytest\n\n" + body)
-    return ["--jobs", "2", "--", "-c", str(tmp_path / "pytest.ini"), "--rootdir", str(tmp_path),
+    # --jobs 0: the other part in one process; starting pytest-xdist workers is not what is tested
+    return ["--jobs", "0", "--", "-c", str(tmp_path / "pytest.ini"), "--rootdir", str(tmp_path),
             "-p", "no:cacheprovider", str(tmp_path)]
 
 
