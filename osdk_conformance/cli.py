@@ -61,6 +61,10 @@ COMMANDS = (
             "sim.simulator", "run_sim"),
     Command(("device",), "acceptance suite against a flight controller on a serial port (or a capture)",
             "device.acceptance", "run_device"),
+    Command(("doctor",), "diagnose a serial link that does not work: the port, the wiring, the baud rate, "
+                         "the profile, encryption, the FC's RX line, activation", "doctor.command", "run_doctor"),
+    Command(("explain",), "what a control mode byte, an ACK code or a frame means, from the spec's tables",
+            "explain", "run_explain"),
     Command(("soak",), "benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost",
             "device.soak", "run_soak"),
     Command(("sdk", "host-test"), "build DJI's host stack with our driver, run a whole session "

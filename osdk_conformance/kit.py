@@ -10,7 +10,9 @@ with the mutation check. Last, it runs the serial acceptance suite against
 the simulated flight controller over a pseudo-terminal (report in
 reports/device.html, capture in reports/device.pcapng), and fuzzes it over
 one (`osdkc fuzz --port`: a healthy simulator survives every case kind; report
-in reports/fuzz.html, capture in reports/fuzz.pcapng). With OSDK_SRC naming a
+in reports/fuzz.html, capture in reports/fuzz.pcapng), and the link doctor
+must find that link healthy (`osdkc doctor`, with the baud rate and profile
+to find). With OSDK_SRC naming a
 checkout of DJI's Onboard-SDK, DJI's own host stack runs a whole session
 against the simulator too (`osdkc sdk host-test`).
 """
@@ -32,6 +34,7 @@ from osdk_conformance.core.paths import CHECKOUT, REPORTS
 from osdk_conformance.core.rules import profile_names
 from osdk_conformance.device.acceptance import add_arguments as device_arguments, run_device
 from osdk_conformance.device.fuzz_command import add_arguments as fuzz_arguments, run_fuzz
+from osdk_conformance.doctor.command import add_arguments as doctor_arguments, run_doctor
 from osdk_conformance.harness import status_readme
 from osdk_conformance.harness.runner import ALL, add_arguments as run_arguments, run_command
 from osdk_conformance.harness.selftest import add_arguments as selftest_arguments, run_selftest
@@ -128,6 +131,18 @@ def _fuzz_on_simulator(reports: Path) -> int:
         return 1
 
 
+def _doctor_on_simulator() -> int:
+    """`osdkc doctor` against a healthy `osdkc sim` at a baud rate it is not told: it must find it and the
+    profile, and say the link works."""
+    print("== osdkc sim --profile m100-fw3.1 --baud 921600 --pty  +  osdkc doctor", flush=True)
+    try:
+        with spawned("--profile", "m100-fw3.1", "--baud", "921600", new_session=True) as (url, _):
+            return _command("doctor", doctor_arguments, run_doctor, "--port", url)
+    except UsageError as e:
+        print(f"  {e}")
+        return 1
+
+
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
     add_seed_argument(p)
     p.add_argument("--report-dir", default=str(REPORTS), metavar="DIR",
@@ -158,6 +173,7 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         ("selftest", lambda: _command("selftest", selftest_arguments, run_selftest)),
         ("device", lambda: _acceptance_on_simulator(reports)),
         ("fuzz", lambda: _fuzz_on_simulator(reports)),
+        ("doctor", _doctor_on_simulator),
     ]
     if os.environ.get("OSDK_SRC"):   # DJI's own host stack from the user's checkout against the simulator
         steps.append(("sdk host-test", lambda: _command("sdk host-test", host_test_arguments, run_host_test,

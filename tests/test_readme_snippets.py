@@ -238,6 +238,8 @@ LINES: dict[str, dict[str, object]] = {
         "osdkc fuzz --impl all": SLOW,
         "osdkc sim --profile a3-fw3.1": NotRun("runs until stopped"),
         "osdkc sim --bug long-frame-hang": NotRun("runs until stopped"),
+        "osdkc explain 0x4B": RUN,
+        "osdkc doctor --port /dev/ttyUSB0": FC,
         "osdkc device --port /dev/ttyUSB0 --profile a3-fw3.1 --active": FC,
         "osdkc device --port /dev/ttyUSB0 --profile a3-fw3.1 --active --app-id N --allow-motion": FC,
         "osdkc device --replay captures/run.pcapng --profile a3-fw3.1": FC,
@@ -246,6 +248,7 @@ LINES: dict[str, dict[str, object]] = {
         "osdkc soak --duration 600": SLOW,
         "osdkc bench": SLOW,
         "osdkc bench --only reliability --runs 200": SLOW,
+        "osdkc bench --only doctor": SLOW,
         "osdkc sdk host-test --osdk ~/Onboard-SDK": DJI,
         "osdkc sdk test --osdk ~/Onboard-SDK": DJI,
         "osdkc kit": SLOW,
@@ -1104,6 +1107,13 @@ def job_osdkc(tmp: Path) -> None:
                                                                                              "both")
     ran["osdkc wireshark install"] = lambda cmd: osdkc_wireshark_install(cmd, tmp / "home", listing.where)
     ran["osdkc --version"] = version
+
+    def explained(cmd: str) -> None:
+        out = run(cmd, tmp, listing.where).stdout.decode()
+        assert out.startswith("control mode byte 0x4B = 0b01001011\n"), f"{listing.where}: `{cmd}` printed {out!r}"
+        assert "a3-fw3.1: DOCUMENTED, combination 4" in out, f"{listing.where}: `{cmd}` printed {out!r}"
+
+    ran["osdkc explain 0x4B"] = explained
     todo = account_lines("readme.osdkc")
     assert sorted(todo) == sorted(ran), f"{listing.where}: RUN lines without a check here: {set(todo) ^ set(ran)}"
     for cmd in todo:

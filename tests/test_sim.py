@@ -186,7 +186,7 @@ def test_with_baud_the_first_command_after_open_is_answered(tmp_path, profile, a
         assert proc.wait(timeout=10) == 143
     s = json.loads(stats.read_text())
     assert s["commands_received"] == 1 and s["acks_sent"] == 1
-    assert s["rx_bytes_discarded"] == {"baud_mismatch": 0, "stalled": 0, "not_a_frame": 0}
+    assert s["rx_bytes_discarded"] == {"baud_mismatch": 0, "stalled": 0, "deaf": 0, "not_a_frame": 0}
 
 
 def test_bytes_at_the_wrong_speed_are_counted_not_dropped_silently(tmp_path):
@@ -209,7 +209,8 @@ def test_bytes_at_the_wrong_speed_are_counted_not_dropped_silently(tmp_path):
     s = json.loads(stats.read_text())
     assert s["commands_received"] == 0
     assert s["rx_bytes"] == len(frame) + 10
-    assert s["rx_bytes_discarded"] == {"baud_mismatch": len(frame) + 5, "stalled": 0, "not_a_frame": 5}
+    assert s["rx_bytes_discarded"] == {"baud_mismatch": len(frame) + 5, "stalled": 0, "deaf": 0,
+                                         "not_a_frame": 5}
 
 
 def _open_error(path) -> int | None:

@@ -26,6 +26,9 @@ Sections (`--only`, default all, in this order):
   of every simulator fault that must all be detected (reliability.py); healthy
   `osdkc fuzz --port` sessions that must find nothing, and seeded sessions
   against each planted bug that must find it (fuzz_reliability.py).
+- doctor (only when named in --only: about ten minutes at 20 runs): seeded
+  diagnoses of `osdkc doctor` against each link fault it must tell apart;
+  each must name that fault and no other (doctor_faults.py, docs/DOCTOR.md).
 
 Nothing here asserts a speed: the numbers are printed, written as JSON
 (--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
@@ -43,7 +46,7 @@ import sys
 import time
 from pathlib import Path
 
-from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, report as bench_report, sections as bench_sections
+from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, doctor_faults as bench_doctor, report as bench_report, sections as bench_sections
 from osdk_conformance.bench.corpus import CORPORA
 from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
@@ -51,7 +54,7 @@ from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
 
-SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability")
+SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor")
 DEFAULT_SECTIONS = SECTIONS[:7]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
@@ -61,12 +64,12 @@ DEFAULTS = {  # (full, --quick)
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
-RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE, FUZZ_RUNS, BUG_RUNS = 200, 20, 2, 40, 20
+RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE, FUZZ_RUNS, BUG_RUNS, DOCTOR_RUNS = 200, 20, 2, 40, 20, 20
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
     ap.add_argument("--only", metavar="SECTIONS",
-                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability)")
+                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability and doctor)")
     ap.add_argument("--quick", action="store_true",
                     help=f"a fast check: corpora of {QUICK_CORPUS_SECONDS:g} s, "
                          f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak, "
@@ -108,6 +111,8 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="reliability: comma-separated simulator faults to run (default all)")
     ap.add_argument("--parallel", type=positive_int, default=1, metavar="N",
                     help="reliability: runs at a time (default 1)")
+    ap.add_argument("--doctor-runs", type=positive_int, default=DOCTOR_RUNS, metavar="N",
+                    help=f"doctor: seeded diagnoses of each link fault (default {DOCTOR_RUNS})")
     ap.add_argument("--json", action="store_true",
                     help="print every number as one JSON object instead of the tables (as every --json does)")
     ap.add_argument("--markdown", metavar="FILE",
@@ -209,6 +214,10 @@ def run_bench(args: argparse.Namespace) -> int:
         result["reliability"] = bench_reliability.measure(args.runs, args.fault_runs, args.busy_per_core, args.parallel,
                                                           kinds, args.fuzz_runs, args.bug_runs)
         result["reliability"]["command"] = command_line(args)
+    if "doctor" in sections:
+        _log(f"doctor: {args.doctor_runs} seeded diagnoses of each of {len(bench_doctor.FAULTS)} link faults")
+        result["doctor"] = bench_doctor.measure(args.doctor_runs, _log)
+        result["doctor"]["command"] = command_line(args)
     if "footprint" in sections:
         _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only")
         result["footprint"] = bench_footprint.measure()
@@ -220,6 +229,8 @@ def run_bench(args: argparse.Namespace) -> int:
     text = bench_report.terminal(result)
     if "footprint" in result:
         text += "\n\n" + bench_footprint.terminal(result["footprint"])
+    if "doctor" in result:
+        text += "\n\nosdkc doctor, seeded diagnoses of each link fault:\n" + bench_doctor.markdown(result["doctor"])
     print(json.dumps(result, indent=1) if args.json else text)
     try:
         if md_path and sections != ["footprint"]:
@@ -235,7 +246,7 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability")
+    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor")
                if s in result)
 
 

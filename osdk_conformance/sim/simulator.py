@@ -216,6 +216,18 @@ class Vehicle:
 # Transports
 
 
+IBSHIFT = 16   # where Linux keeps the input speed in c_cflag (CIBAUD), 0 there meaning "as the output speed"
+
+
+def split_speeds(cflag: int) -> tuple[int, int]:
+    """(input, output) speed of a terminal's c_cflag. The C library's
+    cfgetispeed reports the output speed for both; the kernel keeps an input
+    speed of its own in the CIBAUD bits, which a client sets to receive at
+    one rate while it sends at another."""
+    out = cflag & termios.CBAUD
+    return ((cflag & termios.CIBAUD) >> IBSHIFT) or out, out
+
+
 class PtyTransport:
     """A pseudo-terminal; the slave side is what a client opens. With `link`,
     a symlink names the slave, so an unplugged-and-back port keeps its name."""
@@ -281,11 +293,14 @@ class PtyTransport:
         except OSError:
             return 0
 
-    def speed(self) -> int | None:
+    def speeds(self) -> tuple[int, int] | None:
+        """The client's (input, output) speed: termios keeps both, and a
+        client may set them apart (what it receives at, what it sends at)."""
         try:
-            return termios.tcgetattr(self.slave)[4]
+            cflag = termios.tcgetattr(self.slave)[2]
         except (OSError, termios.error):
             return None
+        return split_speeds(cflag)
 
     def unplug(self) -> None:
         # The name goes first, and the slave stays open until the port is
@@ -391,7 +406,7 @@ class TcpTransport:
     def pending_input(self) -> int:
         return 0
 
-    def speed(self) -> int | None:
+    def speeds(self) -> tuple[int, int] | None:
         return None
 
     def unplug(self) -> None:
@@ -433,6 +448,10 @@ class SimConfig:
     unplug_on_release: bool = False   # unplug when the first release-control request arrives, unheard
     unplug_for: float = 1.0
     baud: int | None = None
+    rx_baud: int | None = None        # the rate it reads at, when not `baud` (a different rate per direction)
+    deaf: bool = False                # it never reads its RX line
+    silent_until_activated: bool = False   # no broadcast before a successful activation
+    loopback: bool = False            # no FC: the line returns what the host sends
     hold: bool = False
     rates: dict[str, int] | None = None
     log_broadcast: str | None = None   # JSON lines: SEQ and value (before fault injection) of every broadcast sent
@@ -488,10 +507,12 @@ class Simulator:
                       "faults": {f: 0 for f in FAULTS},
                       # Every byte the host sent is accounted for: heard as part of a frame, or
                       # discarded for a reason (not_a_frame is settled at exit, see rx_accounting).
-                      "rx_bytes": 0, "rx_bytes_discarded": {"baud_mismatch": 0, "stalled": 0, "not_a_frame": 0}}
+                      "rx_bytes": 0, "rx_bytes_discarded": {"baud_mismatch": 0, "stalled": 0, "deaf": 0,
+                                                            "not_a_frame": 0},
+                      "bytes_echoed": 0}
         self._rx_frame_bytes = 0
         self.running = True
-        self.broadcasting = not cfg.hold
+        self.broadcasting = not (cfg.hold or cfg.silent_until_activated or cfg.loopback)
         self.start = time.monotonic()
         self.last_step = self.start
         self.frame_index = 0
@@ -499,7 +520,8 @@ class Simulator:
         self.send_at = self.start
         self.last_stamp = self.start
         self.battery = 90.0
-        self.baud_ok = True
+        self.baud_ok = True   # the client receives at the rate this FC sends at
+        self.rx_ok = True     # the client sends at the rate this FC reads at
         self.unplugged_until: float | None = None
         self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
         self._current_raw = b""
@@ -737,11 +759,19 @@ class Simulator:
         speed, so a check on a timer would lose the first command."""
         discarded = self.stats["rx_bytes_discarded"]
         self.stats["rx_bytes"] += len(data)
+        if self.cfg.loopback:   # a wire from the host's TX to its RX: same bytes, same speed, no FC
+            self.outbuf += data
+            self.stats["bytes_echoed"] += len(data)
+            self._flush()
+            return
+        if self.cfg.deaf:
+            discarded["deaf"] += len(data)
+            return
         if stalled:
             discarded["stalled"] += len(data)
             return
         self._check_speed()
-        if not self.baud_ok:
+        if not self.rx_ok:
             discarded["baud_mismatch"] += len(data)
             return
         self.on_bytes(data, now)
@@ -750,8 +780,8 @@ class Simulator:
         """The receive counters at the end: bytes in no frame (garbage,
         rejected headers, a frame cut off when the run ended) are not_a_frame."""
         discarded = dict(self.stats["rx_bytes_discarded"])
-        discarded["not_a_frame"] = (self.stats["rx_bytes"] - discarded["baud_mismatch"] - discarded["stalled"]
-                                    - self._rx_frame_bytes)
+        discarded["not_a_frame"] = (self.stats["rx_bytes"] - sum(v for k, v in discarded.items() if k != "not_a_frame")
+                                    - self.stats["bytes_echoed"] - self._rx_frame_bytes)
         return {"rx_bytes": self.stats["rx_bytes"], "rx_bytes_discarded": discarded}
 
     def _ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, body: dict) -> None:
@@ -813,6 +843,8 @@ class Simulator:
             else:
                 code = "success"
                 self.activated = True
+                if self.cfg.silent_until_activated:
+                    self.broadcasting = True
             self._ack(0, 1, op.session, op.seq, {"ack_code": code})
         elif key == (0x00, 0x10):
             codes = [int(c) for c in req.codes]
@@ -885,9 +917,16 @@ class Simulator:
     def _check_speed(self) -> None:
         if self.cfg.baud is None:
             return
-        speed = self.t.speed()
-        want = getattr(termios, f"B{self.cfg.baud}", None)
-        self.baud_ok = speed is None or want is None or speed == want
+        speeds = self.t.speeds()
+        if speeds is None:
+            return
+        receives_at, sends_at = speeds
+
+        def matches(speed: int, baud: int) -> bool:
+            want = getattr(termios, f"B{baud}", None)
+            return want is None or speed == want
+        self.baud_ok = matches(receives_at, self.cfg.baud)
+        self.rx_ok = matches(sends_at, self.cfg.rx_baud or self.cfg.baud)
 
     def run(self) -> None:
         cfg = self.cfg
@@ -1021,6 +1060,16 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--unplug-for", type=non_negative_float, default=1.0, metavar="S",
                    help="... and reopen it S seconds later")
     f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
+    f.add_argument("--rx-baud", type=baud_rate, metavar="BAUD",
+                   help="with --baud: read at BAUD while sending at --baud (a different rate per direction; "
+                        "a pty client's output speed must be BAUD, its input speed --baud)")
+    f.add_argument("--deaf", action="store_true",
+                   help="never read the RX line (the FC's RX pin, or the host's TX wire, unconnected): no ACK, "
+                        "the broadcast goes on")
+    f.add_argument("--silent-until-activated", action="store_true",
+                   help="broadcast nothing until an activation succeeds (answers queries and activation)")
+    f.add_argument("--loopback", action="store_true",
+                   help="no flight controller: the line returns every byte the host sends, and nothing else")
     b = ap.add_argument_group(
         "planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)",
         "SIGHUP (kill -HUP PID) restarts the simulated flight controller, as pulling its power does, "
@@ -1087,6 +1136,10 @@ def run_sim(args: argparse.Namespace) -> int:
     key = key_option(args.key_env, args.encrypt)
     if args.encrypt_handshake and not args.encrypt:
         raise UsageError("--encrypt-handshake goes with --encrypt")
+    if args.rx_baud is not None and args.baud is None:
+        raise UsageError("--rx-baud goes with --baud (the rate it sends at)")
+    if args.loopback and (args.bug or args.deaf or args.silent_until_activated):
+        raise UsageError("--loopback is a line with no flight controller: no --bug, --deaf or --silent-until-activated")
     prof = load_profile(args.profile)
     rates = {}
     for spec in args.rate:
@@ -1101,7 +1154,8 @@ def run_sim(args: argparse.Namespace) -> int:
                     rate_drift=args.rate_drift, implausible=args.implausible, wrong_profile=args.wrong_profile,
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
                     unplug_on_release=args.unplug_on_release,
-                    unplug_for=args.unplug_for, baud=args.baud, hold=args.hold, rates=rates or None,
+                    unplug_for=args.unplug_for, baud=args.baud, rx_baud=args.rx_baud, deaf=args.deaf,
+                    silent_until_activated=args.silent_until_activated, loopback=args.loopback, hold=args.hold, rates=rates or None,
                     log_broadcast=args.log_broadcast, log_acks=args.log_acks, bugs=tuple(dict.fromkeys(args.bug)))
     try:
         transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)

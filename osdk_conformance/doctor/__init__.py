@@ -1,0 +1,1 @@
+"""`osdkc doctor`: what stands between this host and a working OPEN link."""
