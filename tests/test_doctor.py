@@ -57,7 +57,17 @@ def test_a_missing_port_names_the_serial_devices_there_are():
     assert f["evidence"]["serial devices on this host"] == (ports.candidates() or "none")
 
 
+@pytest.mark.parametrize("port", ["/dev/null", "/etc/hostname"])
+def test_something_that_is_not_a_serial_port_is_named_so(port):
+    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "doctor", "--port", port, "--json"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 1, proc.stderr
+    problems = [f["id"] for f in json.loads(proc.stdout)["findings"] if f["verdict"] == PROBLEM]
+    assert problems == ["port.serial"]
+
+
 @pytest.mark.parametrize("args, message", [
+    (("--port", " "), "--port: empty"),
     (("--port", "/dev/null", "--baud", "12"), "--baud"),
     (("--port", "/dev/null", "--profile", "x"), "--profile"),
     (("--port", "/dev/null", "--key-env", "OSDK_NO_SUCH_VARIABLE"), "OSDK_NO_SUCH_VARIABLE"),

@@ -32,6 +32,7 @@ FAULTS: dict[str, Fault] = {
     "healthy": Fault(()),
     "baud": Fault(("--baud", "921600"), ("--baud", "230400"), "link.baud"),
     "baud_scan": Fault(("--baud", "115200"), (), ""),   # no --baud: the scan finds it, and the link works
+    "unusual_baud": Fault(("--baud", "57600"), (), "link.baud"),   # bytes, and no frame at any usual rate
     "encrypted_no_key": Fault(("--encrypt",), (), "link.encryption"),
     "wrong_key": Fault(("--encrypt",), ("--key-env", KEY_ENV), "link.encryption", key=OTHER_KEY),
     "wrong_profile": Fault(("--profile", "m100-fw3.1"), ("--profile", "a3-fw3.1"), "link.profile"),

@@ -44,6 +44,8 @@ def _raise(signum, frame) -> None:
 
 
 def run_doctor(args: argparse.Namespace) -> int:
+    if not args.port.strip():
+        raise UsageError("--port: empty (a serial device such as /dev/ttyUSB0, or a pyserial URL)")
     try:
         key = key_from_env(args.key_env)
     except KeyError_ as e:

@@ -23,6 +23,7 @@ a diagnosis and a verdict read the same bytes the same way.
 from __future__ import annotations
 
 import errno
+import os
 import termios
 import time
 from dataclasses import dataclass, field
@@ -162,6 +163,11 @@ class Doctor:
                                    remedies.permission(facts.owner_group)))
                 return False
             self.d.add(Finding("port.permission", OK, "this user may read and write it"))
+            if facts.is_serial is False:
+                self.d.add(Finding("port.serial", PROBLEM, f"{facts.path} is not a serial port",
+                                   {"serial devices on this host": facts.candidates or "none"},
+                                   remedies.port_missing(facts.candidates)))
+                return False
             consoles = [h for h in facts.holders if h.is_console]
             if consoles:
                 self.d.add(Finding("port.console", PROBLEM, f"a login console runs on this port: "
@@ -229,7 +235,9 @@ class Doctor:
         return None
 
     def _baud_found(self, ln: Listen, asked: int | None, tried: list[int], how: str = "CRC-valid frames") -> None:
-        evidence = {"baud": ln.baud, "valid frames": ln.frames, "rates tried": tried}
+        evidence = {"baud": ln.baud, "valid frames": ln.frames, "rates tried": tried,
+                    "how sure": "each valid frame passed a CRC-16 and a CRC-32: bytes at a wrong rate pass "
+                                "both by chance about once in 2^48 tries"}
         if asked and ln.baud != asked:
             self.d.add(Finding("link.baud", PROBLEM, f"the flight controller sends at {ln.baud} baud, not {asked}",
                                evidence, remedies.wrong_baud(ln.baud, asked)))
@@ -323,8 +331,15 @@ class Doctor:
         share = lost / max(1, lost + an.frames)
         evidence = {"seconds": round(seconds, 2), "valid frames": an.frames, "errors by kind": kinds,
                     "errors per s": round(lost / seconds, 2), "baud": ln.baud}
+        stalls = [round(d, 2) for _, d in ln.port.state.host_stalls]
         if not lost:
             self.d.add(Finding("line.health", OK, f"no error in {an.frames} frames over {seconds:.1f} s", evidence))
+        elif stalls:
+            # bytes a stalled reader left in a full buffer are lost on this host, not on the line
+            self.d.add(Finding("line.health", WARNING, f"{lost} errors, but this host did not read the port for "
+                               f"{max(stalls):.1f} s: the errors may be this host's, not the line's",
+                               {**evidence, "reader stalls s": stalls, "load average": os.getloadavg()[0]},
+                               "run the doctor again on a less busy host"))
         else:
             verdict = PROBLEM if share > NOISY else WARNING
             self.d.add(Finding("line.health", verdict, f"{lost} errors to {an.frames} valid frames "

@@ -46,6 +46,7 @@ class PortFacts:
     writable: bool = True
     owner_group: str | None = None  # the group that may open it (dialout, tty, uucp)
     in_group: bool = True           # whether this user is in that group
+    is_serial: bool | None = None   # a terminal device (None: could not be told)
     holders: list[Holder] = field(default_factory=list)
     candidates: list[str] = field(default_factory=list)
 
@@ -80,12 +81,26 @@ def inspect(name: str) -> PortFacts:
         st = os.stat(facts.path)
         facts.owner_group = grp.getgrgid(st.st_gid).gr_name
         facts.in_group = st.st_gid in os.getgroups() or st.st_gid == os.getgid()
-        if not stat.S_ISCHR(st.st_mode):
+        facts.is_serial = stat.S_ISCHR(st.st_mode) and _is_terminal(facts.path)
+        if facts.is_serial is False:
             facts.candidates = candidates()
     except (OSError, KeyError):
         pass
     facts.holders = holders(facts.path)
     return facts
+
+
+def _is_terminal(path: str) -> bool | None:
+    """Whether the character device is a terminal (a serial port or a pseudo-terminal); None when it
+    cannot be opened to tell. Opened without becoming its controlling terminal, and closed at once."""
+    try:
+        fd = os.open(path, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
+    except OSError:
+        return None
+    try:
+        return os.isatty(fd)
+    finally:
+        os.close(fd)
 
 
 def holders(device: str) -> list[Holder]:

@@ -72,8 +72,8 @@ BROADCAST_OFF = ("the FC sends no broadcast: activate the app (--app-id with --k
 NO_KEY = "give the app key: --key-env VAR, with VAR holding the 64 hex digits of the key"
 WRONG_KEY = "the key does not decrypt the FC's frames: use the key of the app the FC was activated with"
 DEAF = ("the FC does not hear this host: check the adapter's TX to the FC's RX wire (and that TX and RX are "
-        "not both on the FC's TX), that API control is enabled in DJI Assistant, and that no other program "
-        "writes to or reads from the port")
+        "not both on the FC's TX), that API control is enabled in DJI Assistant, that the FC reads at the rate it "
+        "sends at, and that no other program writes to or reads from the port")
 ACTIVATION_UNANSWERED = ("activation got no ACK although the version query did: check the app id, and that "
                          "the FC's firmware supports the SDK version sent")
 
