@@ -150,6 +150,8 @@ def command_line(args: argparse.Namespace) -> str:
         v = getattr(args, opt)
         if v is not None:
             parts += [f"--{opt.replace('_', '-')}", f"{v:g}" if isinstance(v, float) else str(v)]
+    if "doctor" in (args.only or ""):
+        parts += ["--doctor-runs", str(args.doctor_runs)]
     if args.quick:
         parts.append("--quick")
     for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),

@@ -13,7 +13,10 @@ Every frame it sends is built with the Construct spec (osdk_construct).
 Fault injection (per broadcast frame, reproducible with --seed): noise
 bytes, bit flips, dropped bytes, truncated frames, bad CRCs, duplicated
 frames, jitter, rate drift, implausible values, another profile's layout,
-a stalled stream, an unplugged-and-back port, a baud rate mismatch.
+a stalled stream, an unplugged-and-back port, a baud rate mismatch. Link
+faults for `osdkc doctor` to tell apart: an FC that never reads its RX line
+(--deaf), one that broadcasts nothing until activated, a loopback line with
+no FC on it, a different baud rate per direction (--rx-baud).
 Planted firmware bugs (--bug, sim/bugs.py) model receive-path bugs of real
 flight controllers for a device fuzzer to find; SIGHUP restarts it (a power
 cycle), as a user brings a hung flight controller back.
@@ -480,6 +483,12 @@ MAX_WAIT_S = 0.05
 signal handler or another thread cannot wake it, so this bounds how late the
 restart (and a stop) is acted on."""
 
+ANSWER_S = 0.02
+"""With --rx-baud, how long after the command an ACK leaves: a real FC's
+processing time, which the simulator otherwise skips. A host that writes at
+one rate, drains and switches to the other has switched by then, as on a real
+line; an ACK sent at once could beat the switch and reach it garbled."""
+
 
 class Simulator:
     def __init__(self, cfg: SimConfig, transport) -> None:
@@ -500,6 +509,7 @@ class Simulator:
         self.onboard_requested = False
         self.seq = 0
         self.outbuf = bytearray()
+        self.answers: list[tuple[float, bytes]] = []   # with --rx-baud: (when it leaves, ACK frame), see ANSWER_S
         self.stats = {"frames_sent": 0, "broadcast_frames": 0, "acks_sent": 0, "bytes_sent": 0,
                       "frames_dropped_tx_full": 0, "broadcast_skipped_behind": 0, "commands_received": 0,
                       "frames_rejected": 0,
@@ -509,10 +519,12 @@ class Simulator:
                       # discarded for a reason (not_a_frame is settled at exit, see rx_accounting).
                       "rx_bytes": 0, "rx_bytes_discarded": {"baud_mismatch": 0, "stalled": 0, "deaf": 0,
                                                             "not_a_frame": 0},
-                      "bytes_echoed": 0}
+                      "bytes_echoed": 0, "bytes_echo_lost": 0}
+        if cfg.silent_until_activated:
+            self.stats["activated_after_s"] = None
         self._rx_frame_bytes = 0
         self.running = True
-        self.broadcasting = not (cfg.hold or cfg.silent_until_activated or cfg.loopback)
+        self.broadcasting = not cfg.hold   # released by SIGUSR1; see _broadcasts for the rest
         self.start = time.monotonic()
         self.last_step = self.start
         self.frame_index = 0
@@ -520,9 +532,10 @@ class Simulator:
         self.send_at = self.start
         self.last_stamp = self.start
         self.battery = 90.0
-        self.baud_ok = True   # the client receives at the rate this FC sends at
-        self.rx_ok = True     # the client sends at the rate this FC reads at
         self.unplugged_until: float | None = None
+        # whether the client's output speed was the rate this FC reads at, at the start of the run
+        # loop's last pass and of this one (on_received)
+        self.sent_at_rx_rate = (False, False)
         self.last_ack: dict[int, tuple[int, bytes, bytes]] = {}   # session -> (seq, command frame, ACK frame)
         self._current_raw = b""
         self.boot = self.start   # the time stamp item counts from here; a reboot moves it
@@ -540,6 +553,14 @@ class Simulator:
 
     def frame_rate(self) -> float:
         return max(self.rates.values(), default=0)
+
+    def _broadcasts(self) -> bool:
+        """Not held (--hold), a flight controller on the line (not
+        --loopback) and, with --silent-until-activated, activated: asked each
+        time rather than switched on at activation, so that a reboot, which
+        loses the activation, makes such an FC silent again."""
+        return (self.broadcasting and not self.cfg.loopback
+                and (self.activated or not self.cfg.silent_until_activated))
 
     def _due_items(self) -> list[str]:
         base = self.frame_rate()
@@ -662,7 +683,7 @@ class Simulator:
             # later as seconds of stale frames no flight controller sends.
             self.stats["frames_dropped_tx_full"] += frames
             return
-        if not self.baud_ok:
+        if not self._at_speed(sending=True):
             data = bytes((b * 37 + 11) & 0xFF for b in data)   # what a receiver at the wrong speed sees
         self.outbuf += data
         self.stats["frames_sent"] += frames
@@ -731,6 +752,7 @@ class Simulator:
         self.frame_index = 0
         self.vehicle.command = None
         self.last_ack.clear()
+        self.answers.clear()
         self.deframer = Deframer()
 
     def request_restart(self) -> int:
@@ -759,10 +781,12 @@ class Simulator:
         speed, so a check on a timer would lose the first command."""
         discarded = self.stats["rx_bytes_discarded"]
         self.stats["rx_bytes"] += len(data)
-        if self.cfg.loopback:   # a wire from the host's TX to its RX: same bytes, same speed, no FC
-            self.outbuf += data
-            self.stats["bytes_echoed"] += len(data)
-            self._flush()
+        if self.cfg.loopback:
+            # a wire from the host's TX to its RX: the same bytes at the same speed, no FC. Written at
+            # once, never queued: what the host's full receive buffer cannot take is lost, as on a wire
+            echoed = max(0, self.t.write(data))
+            self.stats["bytes_echoed"] += echoed
+            self.stats["bytes_echo_lost"] += len(data) - echoed
             return
         if self.cfg.deaf:
             discarded["deaf"] += len(data)
@@ -770,8 +794,12 @@ class Simulator:
         if stalled:
             discarded["stalled"] += len(data)
             return
-        self._check_speed()
-        if not self.rx_ok:
+        # A pty has no line timing: a client that writes, drains and switches
+        # to another speed at once has switched before the kernel hands this
+        # process its bytes. So they are heard if the client sends at this FC's
+        # rate now or did when the run loop's pass that reads them, or the
+        # one before, began.
+        if not (self._at_speed(sending=False) or any(self.sent_at_rx_rate)):
             discarded["baud_mismatch"] += len(data)
             return
         self.on_bytes(data, now)
@@ -781,7 +809,8 @@ class Simulator:
         rejected headers, a frame cut off when the run ended) are not_a_frame."""
         discarded = dict(self.stats["rx_bytes_discarded"])
         discarded["not_a_frame"] = (self.stats["rx_bytes"] - sum(v for k, v in discarded.items() if k != "not_a_frame")
-                                    - self.stats["bytes_echoed"] - self._rx_frame_bytes)
+                                    - self.stats["bytes_echoed"] - self.stats["bytes_echo_lost"]
+                                    - self._rx_frame_bytes)
         return {"rx_bytes": self.stats["rx_bytes"], "rx_bytes_discarded": discarded}
 
     def _ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, body: dict) -> None:
@@ -793,7 +822,14 @@ class Simulator:
         self.stats["acks_sent"] += 1
         self.last_ack[session] = (seq, self._current_raw, frame)
         self._log_ack(cmd_set, cmd_id, session, seq, value, encrypt, resent=False)
-        self._send(frame, frames=1)
+        self._answer(frame)
+
+    def _answer(self, frame: bytes) -> None:
+        """Send an ACK: at once, or with --rx-baud after ANSWER_S (the run loop sends it)."""
+        if self.cfg.rx_baud is None:
+            self._send(frame, frames=1)
+        else:
+            self.answers.append((time.monotonic() + ANSWER_S, frame))
 
     def _log_ack(self, cmd_set: int, cmd_id: int, session: int, seq: int, value: bytes, encrypted: bool,
                  resent: bool) -> None:
@@ -822,7 +858,7 @@ class Simulator:
                 if self.ack_log:
                     again = open_frame(cached[2], self.cfg.key)
                     self._log_ack(op.cmd_set, op.cmd_id, op.session, op.seq, again.value, again.encrypted, resent=True)
-                self._send(cached[2], frames=1)
+                self._answer(cached[2])
                 return
         key = (op.cmd_set, op.cmd_id)
         try:
@@ -842,9 +878,9 @@ class Simulator:
                 code = "wrong_sdk_version"
             else:
                 code = "success"
+                if self.cfg.silent_until_activated and self.stats["activated_after_s"] is None:
+                    self.stats["activated_after_s"] = round(now - self.start, 3)   # and silent until then
                 self.activated = True
-                if self.cfg.silent_until_activated:
-                    self.broadcasting = True
             self._ack(0, 1, op.session, op.seq, {"ack_code": code})
         elif key == (0x00, 0x10):
             codes = [int(c) for c in req.codes]
@@ -907,6 +943,7 @@ class Simulator:
         the run loop reopens it `unplug_for` s later."""
         self.t.unplug()
         self.outbuf.clear()
+        self.answers.clear()
         self.unplugged_until = now + self.cfg.unplug_for
 
     def _halted(self, now: float) -> bool:
@@ -914,19 +951,21 @@ class Simulator:
         return ((self.resume_at is not None and now < self.resume_at)
                 or (self.bugs is not None and self.bugs.halted(now)))
 
-    def _check_speed(self) -> None:
+    def _at_speed(self, sending: bool) -> bool:
+        """Whether the client's speed for one direction is this FC's: for
+        what it sends, the client's input speed against --baud; for what it
+        reads, the client's output speed against --rx-baud (else --baud).
+        Looked at now, never cached: a client may write at one speed, drain,
+        and switch to another to read the answer."""
         if self.cfg.baud is None:
-            return
+            return True
         speeds = self.t.speeds()
-        if speeds is None:
-            return
+        if speeds is None:   # a TCP port has no speed
+            return True
         receives_at, sends_at = speeds
-
-        def matches(speed: int, baud: int) -> bool:
-            want = getattr(termios, f"B{baud}", None)
-            return want is None or speed == want
-        self.baud_ok = matches(receives_at, self.cfg.baud)
-        self.rx_ok = matches(sends_at, self.cfg.rx_baud or self.cfg.baud)
+        baud = self.cfg.baud if sending else (self.cfg.rx_baud or self.cfg.baud)
+        want = getattr(termios, f"B{baud}", None)
+        return want is None or (receives_at if sending else sends_at) == want
 
     def run(self) -> None:
         cfg = self.cfg
@@ -950,13 +989,17 @@ class Simulator:
                 self.t.replug()
                 self.unplugged_until = None
             stalled = (cfg.stall_at is not None and elapsed >= cfg.stall_at) or self._halted(now)
+            # what on_received looks back on: bytes read in this pass were written in it or in the last one
+            self.sent_at_rx_rate = (self.sent_at_rx_rate[1], self._at_speed(sending=False))
             rate = self.frame_rate()
             period = 1.0 / (rate * (1.0 + cfg.rate_drift)) if rate > 0 else 0.0
             wait = MAX_WAIT_S
-            if self.broadcasting and not stalled and period:
+            if self._broadcasts() and not stalled and period:
                 wait = max(0.0, min(wait, self.send_at - now))
             elif self.resume_at is not None and now < self.resume_at:
                 wait = min(wait, self.resume_at - now)   # a reboot ends on time
+            if self.answers and not stalled:
+                wait = max(0.0, min(wait, self.answers[0][0] - now))
             rfds = self.t.read_fds()
             wfds = [rfds[-1]] if self.outbuf and rfds else []
             try:
@@ -973,18 +1016,20 @@ class Simulator:
             if w:
                 self._flush()
             stalled = stalled or self._halted(now)   # a planted bug that triggered on what was just read
+            while self.answers and self.answers[0][0] <= now and not stalled:
+                self._send(self.answers.pop(0)[1], frames=1)
             # the FC's state when the frame it owes was due, not when this late
             # process got round to it: its values must match its time stamp
-            behind = self.broadcasting and not stalled and period and self.last_step < self.send_at < now
+            broadcasts = self._broadcasts()
+            behind = broadcasts and not stalled and period and self.last_step < self.send_at < now
             t_state = self.send_at if behind else now
             self.vehicle.step(t_state - self.last_step, t_state)
             self.battery = max(0.0, self.battery - (t_state - self.last_step) / 60.0)
             self.last_step = t_state
-            if not self.broadcasting or stalled or not period:
+            if not broadcasts or stalled or not period:
                 self.next_frame = self.send_at = now
                 continue
             if now >= self.send_at:
-                self._check_speed()
                 self.last_stamp = max(self.send_at, self.last_stamp)   # injected jitter never runs the clock back
                 self.emit_broadcast(now, stamp=self.last_stamp)
                 self.next_frame += period
@@ -1062,14 +1107,18 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     f.add_argument("--exit-after", type=non_negative_float, metavar="S", help="exit after S seconds")
     f.add_argument("--rx-baud", type=baud_rate, metavar="BAUD",
                    help="with --baud: read at BAUD while sending at --baud (a different rate per direction; "
-                        "a pty client's output speed must be BAUD, its input speed --baud)")
+                        "a pty client's output speed must be BAUD, its input speed --baud); ACKs leave "
+                        f"{ANSWER_S * 1000:g} ms after the command, so a client may switch speeds in between")
     f.add_argument("--deaf", action="store_true",
                    help="never read the RX line (the FC's RX pin, or the host's TX wire, unconnected): no ACK, "
                         "the broadcast goes on")
     f.add_argument("--silent-until-activated", action="store_true",
-                   help="broadcast nothing until an activation succeeds (answers queries and activation)")
+                   help="broadcast nothing until an activation succeeds, as an FC whose broadcast frequencies "
+                        "are all 0 until an app is activated (answers the version query and activation; a "
+                        "restart loses the activation and silences it again)")
     f.add_argument("--loopback", action="store_true",
-                   help="no flight controller: the line returns every byte the host sends, and nothing else")
+                   help="no flight controller: the host's TX wired to its RX (a loopback plug), every byte the "
+                        "host sends comes back, and nothing else")
     b = ap.add_argument_group(
         "planted firmware bugs (for a device fuzzer to find; docs/ACCEPTANCE.md)",
         "SIGHUP (kill -HUP PID) restarts the simulated flight controller, as pulling its power does, "
@@ -1132,14 +1181,29 @@ def _hold_terminal(url: str) -> int:
         return -1
 
 
+def _flight_controller_options(args: argparse.Namespace) -> list[str]:
+    """The options given that shape what the flight controller sends or how
+    it hears; with --loopback there is no flight controller to shape."""
+    given = {"--bug": args.bug, "--deaf": args.deaf, "--silent-until-activated": args.silent_until_activated,
+             "--hold": args.hold, "--baud": args.baud is not None, "--encrypt": args.encrypt,
+             "--implausible": args.implausible, "--wrong-profile": args.wrong_profile is not None,
+             "--stall-at": args.stall_at is not None, "--unplug-on-release": args.unplug_on_release,
+             "--jitter": args.jitter > 0, "--rate-drift": args.rate_drift != 0,
+             **{f"--{name.replace('_', '-')}": getattr(args, name) > 0 for name in FAULTS}}
+    return [option for option, on in given.items() if on]
+
+
 def run_sim(args: argparse.Namespace) -> int:
     key = key_option(args.key_env, args.encrypt)
     if args.encrypt_handshake and not args.encrypt:
         raise UsageError("--encrypt-handshake goes with --encrypt")
     if args.rx_baud is not None and args.baud is None:
         raise UsageError("--rx-baud goes with --baud (the rate it sends at)")
-    if args.loopback and (args.bug or args.deaf or args.silent_until_activated):
-        raise UsageError("--loopback is a line with no flight controller: no --bug, --deaf or --silent-until-activated")
+    if args.loopback and (fc_options := _flight_controller_options(args)):
+        raise UsageError(f"--loopback is a line with no flight controller on it: not with {', '.join(fc_options)}")
+    if args.deaf and (args.bug or args.unplug_on_release or args.rx_baud is not None):
+        raise UsageError("--deaf hears nothing: not with --bug, --unplug-on-release or --rx-baud, "
+                         "which act on what it hears")
     prof = load_profile(args.profile)
     rates = {}
     for spec in args.rate:
@@ -1155,7 +1219,8 @@ def run_sim(args: argparse.Namespace) -> int:
                     stall_at=args.stall_at, exit_after=args.exit_after, unplug_at=args.unplug_at,
                     unplug_on_release=args.unplug_on_release,
                     unplug_for=args.unplug_for, baud=args.baud, rx_baud=args.rx_baud, deaf=args.deaf,
-                    silent_until_activated=args.silent_until_activated, loopback=args.loopback, hold=args.hold, rates=rates or None,
+                    silent_until_activated=args.silent_until_activated, loopback=args.loopback, hold=args.hold,
+                    rates=rates or None,
                     log_broadcast=args.log_broadcast, log_acks=args.log_acks, bugs=tuple(dict.fromkeys(args.bug)))
     try:
         transport = TcpTransport(args.host, args.tcp) if args.tcp is not None else PtyTransport(args.link)
