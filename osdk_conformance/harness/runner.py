@@ -280,7 +280,10 @@ class SignalStop:
 
     SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
-    def __init__(self) -> None:
+    def __init__(self, raises: bool = True) -> None:
+        # raises=False: the signal is only noted, for a caller that polls `received`; an exception raised
+        # at any point of the main thread could leave a lock of concurrent.futures held (a hang)
+        self.raises = raises
         self.armed = False
         self.received: str | None = None
         self._old: dict[int, Any] = {}
@@ -294,7 +297,7 @@ class SignalStop:
     def _handle(self, signum: int, frame: Any) -> None:
         name = signal.Signals(signum).name
         self.received = self.received or name
-        if self.armed:
+        if self.armed and self.raises:
             self.armed = False
             raise Interrupted(name)
 

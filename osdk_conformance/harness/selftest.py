@@ -44,7 +44,7 @@ from osdk_conformance.core.options import DEFAULT_JOBS, non_negative_int, positi
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.harness import mutants
 from osdk_conformance.harness.report import FAIL
-from osdk_conformance.harness.runner import Interrupted, SignalStop, StatusLine, run_cases
+from osdk_conformance.harness.runner import SignalStop, StatusLine, run_cases
 from osdk_conformance.harness.testee import Testee, TesteeStartError
 from osdk_conformance.harness.vectors import compare, load_cases
 
@@ -261,7 +261,7 @@ def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,
     shown = _Progress(len(chosen), progress)
     interrupted: str | None = None
     pool = ThreadPoolExecutor(max_workers=max(1, jobs))
-    with SignalStop() as stop:
+    with SignalStop(raises=False) as stop:
         try:
             base = pool.submit(run_mutant, mutants.NONE, ordered, max_failures=0, timeout=max(timeout, 10.0),
                                description="no fault (the harness itself)", running=running) if baseline else None
@@ -269,12 +269,11 @@ def selftest(names: Iterable[str] | None = None, *, jobs: int = DEFAULT_JOBS,
                                    description=mutants.MUTANTS[n].description, violates=mutants.MUTANTS[n].violates,
                                    expect=mutants.MUTANTS[n].expect, running=running) for n in chosen]
             everything = futures + ([base] if base is not None else [])
-            # Waiting in short slices keeps the main thread where a signal
-            # handler can run, and gives the progress line its beat.
-            while wait(everything, timeout=0.5).not_done:
+            # Waiting in short slices notices a signal within moments (the
+            # handler only notes it: raised inside wait() it could leave a
+            # future's lock held and the pool hung) and gives the progress line its beat.
+            while wait(everything, timeout=0.2).not_done and not stop.received:
                 shown.show([f.result() for f in futures if f.done()], running.sources.get(mutants.NONE))
-        except Interrupted as i:
-            interrupted = i.signame
         finally:
             stop.disarm()  # from here on a signal is only noted
             if interrupted or stop.received:
