@@ -34,7 +34,7 @@ import serial
 from osdk_conformance.core.commands import COMMANDS
 from osdk_conformance.core.deframe import MAX_LEN, Deframer, Frame
 from osdk_conformance.core.errors import one_line
-from osdk_conformance.core.rules import default_rules, profile_names
+from osdk_conformance.core.rules import default_rules
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.device.active import Commander
 from osdk_conformance.device.analysis import Analyzer
@@ -478,6 +478,3 @@ def _console_text(raw: bytes) -> str:
 def _enum_note(rules, profile: str) -> str:
     return f"; flight status uses the {rules.profile(profile).flight_status_enum} enum"
 
-
-def known_profiles() -> tuple[str, ...]:
-    return profile_names()
