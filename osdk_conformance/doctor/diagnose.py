@@ -35,6 +35,7 @@ from osdk_conformance.core.commands import COMMANDS
 from osdk_conformance.core.deframe import MAX_LEN, Deframer, Frame
 from osdk_conformance.core.errors import one_line
 from osdk_conformance.core.rules import default_rules
+from osdk_conformance.core.tty import with_input_speed
 from osdk_conformance.core.wire import encode, open_frame
 from osdk_conformance.device.active import Commander
 from osdk_conformance.device.analysis import Analyzer
@@ -43,7 +44,6 @@ from osdk_conformance.doctor import ports, remedies
 from osdk_conformance.doctor.findings import NOT_CHECKED, OK, PROBLEM, WARNING, Diagnosis, Finding
 from osdk_conformance.reference.decode import profiles_decoding
 
-IBSHIFT = 16   # where Linux keeps a terminal's input speed in c_cflag (CIBAUD)
 # The rates DJI's flight controllers are set to in DJI Assistant, most common first after the default.
 BAUDS = (230400, 115200, 460800, 921600, 1000000)
 FRAMES_TO_SETTLE = 3        # CRC-valid frames that settle a baud rate
@@ -430,7 +430,7 @@ def _query_at(ln: Listen, seq: int, baud: int) -> bool:
         split = list(attrs)
         # the C library sets one speed for both directions (CBAUD); the kernel takes an input speed of
         # its own in CIBAUD. A UART driver that cannot split them keeps one rate: see docs/DOCTOR.md.
-        split[2] = (attrs[2] & ~termios.CIBAUD) | receive << IBSHIFT
+        split[2] = with_input_speed(attrs[2], receive)
         split[4] = split[5] = out
         termios.tcsetattr(ser.fd, termios.TCSADRAIN, split)
         try:

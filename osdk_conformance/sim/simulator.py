@@ -51,6 +51,7 @@ from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import (baud_rate, non_negative_float, non_negative_int, probability, rate_change,
                                            tcp_port, uint32)
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
+from osdk_conformance.core.tty import split_speeds
 from osdk_conformance.core.wire import encode, key_option, open_frame
 from osdk_conformance.reference.values import broadcast_data, cut
 from osdk_conformance.sim.bugs import BUGS, REBOOT_PAUSE_S, PlantedBugs
@@ -217,18 +218,6 @@ class Vehicle:
 
 # --------------------------------------------------------------------------
 # Transports
-
-
-IBSHIFT = 16   # where Linux keeps the input speed in c_cflag (CIBAUD), 0 there meaning "as the output speed"
-
-
-def split_speeds(cflag: int) -> tuple[int, int]:
-    """(input, output) speed of a terminal's c_cflag. The C library's
-    cfgetispeed reports the output speed for both; the kernel keeps an input
-    speed of its own in the CIBAUD bits, which a client sets to receive at
-    one rate while it sends at another."""
-    out = cflag & termios.CBAUD
-    return ((cflag & termios.CIBAUD) >> IBSHIFT) or out, out
 
 
 class PtyTransport:
