@@ -17,7 +17,10 @@ results and one error type, and no protocol logic of its own:
   the testee supervisor, the failure list, coverage and the verdict
   (harness/runner.py);
 - `simulator` runs `osdkc sim` in a thread of this process, on a
-  pseudo-terminal.
+  pseudo-terminal;
+- `judge_tap_capture` is `osdkc tap --replay`: every check of the tap on a
+  recorded session (tap/), and `write_capture` records one from bytes and
+  their times, in the kit's pcapng format (core/capture.py).
 
 Everything in `__all__` is the stable interface (docs/API.md says what that
 promises); every other module of the package may change without notice.
@@ -41,6 +44,7 @@ import construct
 
 from osdk_conformance.core import model as value_model
 from osdk_conformance.core import rules
+from osdk_conformance.core.capture import CaptureError, CaptureWriter, RX, TX
 from osdk_conformance.core.errors import UsageError, one_line
 from osdk_conformance.core.options import non_negative_int, positive_float, probability
 from osdk_conformance.core.wire import encode as encode_wire_frame
@@ -54,6 +58,10 @@ from osdk_conformance.reference import codec, values
 from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, stream_events
 from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
+from osdk_conformance.device.checks import Options as _DeviceOptions
+from osdk_conformance.device.verdict import acceptance_word
+from osdk_conformance.tap.checks import TapOptions as _TapOptions
+from osdk_conformance.tap.replay import judge_capture as _judge_capture
 from osdk_conformance._construct import F32, F64, encode_movement_control as _encode_movement_value, osdk_payload
 
 __all__ = [
@@ -71,6 +79,8 @@ __all__ = [
     "Capabilities", "CaseResult", "Coverage", "ConformanceRun", "bundled_implementations", "run_conformance",
     # the simulator
     "RunningSimulator", "simulator",
+    # a host judged from a capture
+    "write_capture", "TapCheck", "TapReport", "judge_tap_capture",
 ]
 
 BytesLike = bytes | bytearray | memoryview
@@ -799,3 +809,88 @@ def simulator(profile: str = SimConfig.profile, *, seed: int | None = None, rate
                                    f"{one_line(failed[0])}") from failed[0]
     finally:
         transport.close()
+
+
+# ---------------------------------------------------------------- a host judged from a capture
+
+
+def write_capture(path: str | os.PathLike[str], records: Iterable[tuple[str, float, BytesLike]], *,
+                  comment: Mapping[str, Any] | None = None) -> int:
+    """Record (direction, time in s, bytes) triples in a pcapng capture of
+    the kit's format: "tx" the host's bytes (sent to the flight controller),
+    "rx" the flight controller's. Returns how many records were written.
+    What `osdkc tap`, `osdkc device --replay` and `osdkc decode` read; a
+    host's own log turned into one can be judged by `judge_tap_capture`."""
+    rows = []
+    for n, rec in enumerate(records):
+        try:
+            direction, t, data = rec
+        except (TypeError, ValueError):
+            raise InputError(f"record {n}: want (direction, time, bytes), got {rec!r}") from None
+        if direction not in ("rx", "tx"):
+            raise InputError(f"record {n}: direction must be 'rx' or 'tx', got {direction!r}")
+        if not isinstance(t, (int, float)) or isinstance(t, bool) or t != t or t in (float("inf"), float("-inf")) or t < 0:
+            raise InputError(f"record {n}: time must be a finite number of seconds >= 0, got {t!r}")
+        rows.append((RX if direction == "rx" else TX, round(t * 1e9), _bytes(data, f"record {n}")))
+    writer = CaptureWriter(os.fspath(path), dict(comment or {"tool": "osdk_conformance.api.write_capture"}))
+    try:
+        for direction, ts, data in rows:
+            writer.record(direction, data, ts)
+    finally:
+        writer.close()
+    return len(rows)
+
+
+@dataclass(frozen=True)
+class TapCheck:
+    """One check of `osdkc tap`: `id` (host.cadence, pair.unanswered, stream.rates, ...), its `category`
+    (host, pair, fc.link, fc.stream, ...), `status` and what was found."""
+
+    id: str
+    category: str
+    status: Status
+    message: str
+    kind: str = ""
+
+
+@dataclass(frozen=True)
+class TapReport:
+    """What `osdkc tap --replay` says of a capture: `verdict` PASS or FAIL,
+    every check, and what the host sent."""
+
+    verdict: str
+    checks: tuple[TapCheck, ...]
+    commands: tuple[str, ...]               # the host's commands that want an answer, in order
+    movement_commands: int
+    mode_bytes: dict[int, int]              # movement control mode byte -> how many
+
+    def failed(self, category: str | None = None) -> list[str]:
+        """The ids of the checks that failed (of one category, or of a group: "host", "pair", "fc")."""
+        return [c.id for c in self.checks if c.status in ("fail", "error")
+                and (category is None or c.category == category or c.category.startswith(category + "."))]
+
+
+def judge_tap_capture(path: str | os.PathLike[str], profile: str, *, key: bytes | None = None,
+                      min_movement_hz: float = 10.0, max_movement_gap: float = 0.5) -> TapReport:
+    """Every check of `osdkc tap` on a recorded session: the host's
+    commands, the exchange of host and flight controller, and the flight
+    controller's passive checks (docs/TAP.md). OSError when the file cannot
+    be read; InputError when it is not a capture or is damaged."""
+    _profile(profile)
+    if key is not None and (not isinstance(key, (bytes, bytearray)) or len(key) != 32):
+        raise InputError("key must be 32 bytes (the app key)")
+    for name, v in (("min_movement_hz", min_movement_hz), ("max_movement_gap", max_movement_gap)):
+        try:
+            positive_float(str(v))
+        except Exception:
+            raise InputError(f"{name} must be a finite number > 0, got {v!r}") from None
+    opts = _TapOptions(device=_DeviceOptions(profile=profile), min_movement_hz=float(min_movement_hz),
+                       max_movement_gap=float(max_movement_gap))
+    try:
+        judged = _judge_capture(os.fspath(path), opts, bytes(key) if key else None)
+    except CaptureError as e:
+        raise InputError(str(e)) from None
+    checks = tuple(TapCheck(r.id, r.category, cast(Status, r.status), r.message, r.kind) for r in judged.results)
+    modes: Counter[int] = Counter(m.mode for m in judged.judge.moves)
+    return TapReport(acceptance_word(report.conforms(judged.results), None), checks,
+                     tuple(c.name for c in judged.judge.commands), len(judged.judge.moves), dict(modes))

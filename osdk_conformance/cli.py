@@ -63,6 +63,10 @@ COMMANDS = (
             "device.acceptance", "run_device"),
     Command(("doctor",), "diagnose a serial link that does not work: the port, the wiring, the baud rate, "
                          "the profile, encryption, the FC's RX line, activation", "doctor.command", "run_doctor"),
+    Command(("tap",), "sit between a host and a flight controller (or listen to both lines) and judge what the "
+                      "host sends, the pair's exchange and the FC", "tap.command", "run_tap"),
+    Command(("host",), "a whole onboard-computer session against a flight controller (or through a tap), "
+                       "healthy or with a planted host bug (--bug)", "host.command", "run_host"),
     Command(("explain",), "what a control mode byte, an ACK code or a frame means, from the spec's tables",
             "explain", "run_explain"),
     Command(("soak",), "benchmark: every item at 100 Hz from osdkc sim over a pty, no frame may be lost",

@@ -12,7 +12,9 @@ reports/device.html, capture in reports/device.pcapng), and fuzzes it over
 one (`osdkc fuzz --port`: a healthy simulator survives every case kind; report
 in reports/fuzz.html, capture in reports/fuzz.pcapng), and the link doctor
 must find that link healthy (`osdkc doctor`, with the baud rate and profile
-to find). With OSDK_SRC naming a
+to find); last, the reference host (`osdkc host`) runs a session through the
+tap (`osdkc tap`), which must pass it (reports in reports/tap/). With
+OSDK_SRC naming a
 checkout of DJI's Onboard-SDK, DJI's own host stack runs a whole session
 against the simulator too (`osdkc sdk host-test`).
 """
@@ -28,6 +30,7 @@ from osdk_conformance._construct.frame import build_frame
 from osdk_conformance._kaitai.osdk_frame import OsdkFrame
 from osdk_conformance._kaitai.osdk_payload import OsdkPayload
 
+from osdk_conformance.bench import tap_hosts
 from osdk_conformance.core import model
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.paths import CHECKOUT, REPORTS
@@ -143,6 +146,24 @@ def _doctor_on_simulator() -> int:
         return 1
 
 
+def _tap_on_simulator(reports: Path) -> int:
+    """`osdkc host`, the reference host, through `osdkc tap` to `osdkc sim`: the tap must stay
+    transparent (the host's session completes) and find nothing wrong with either side."""
+    print("== osdkc sim --profile m100-fw3.1 --baud 921600  +  osdkc tap --fc SIM  +  osdkc host --port TAP",
+          flush=True)
+    try:
+        session = tap_hosts.run_session("healthy", 1, reports / "tap")
+    except (OSError, RuntimeError) as e:
+        print(f"  {e}")
+        return 1
+    out = session["tap_stdout"].rstrip().splitlines()
+    print("\n".join(line for line in out if not line.startswith(("PASS", "/dev/"))), flush=True)
+    if session["host_status"] != 0:
+        print(f"  the host's session did not complete (exit {session['host_status']}): "
+              f"{session['host_stderr'].strip().splitlines()[-1:]}")
+    return 0 if tap_hosts.judged_right("healthy", session) else 1
+
+
 def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str] = ()) -> None:
     add_seed_argument(p)
     p.add_argument("--report-dir", default=str(REPORTS), metavar="DIR",
@@ -174,6 +195,7 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         ("device", lambda: _acceptance_on_simulator(reports)),
         ("fuzz", lambda: _fuzz_on_simulator(reports)),
         ("doctor", _doctor_on_simulator),
+        ("tap", lambda: _tap_on_simulator(reports)),
     ]
     if os.environ.get("OSDK_SRC"):   # DJI's own host stack from the user's checkout against the simulator
         steps.append(("sdk host-test", lambda: _command("sdk host-test", host_test_arguments, run_host_test,

@@ -11,7 +11,9 @@ checked.
   movement control, so every kind of phase is on the plots;
 - device, failing: a simulator that flips bits, listened to passively (CRC
   failures: a failure no busy host can cause or hide);
-- fuzz: `osdkc fuzz --port` against a simulator with a planted bug it finds.
+- fuzz: `osdkc fuzz --port` against a simulator with a planted bug it finds;
+- tap, failing: `osdkc tap --replay` of a session of `osdkc host` recorded
+  through the tap, the host streaming movement at 5 Hz.
 
 Each page must show its verdict first (in the DOM, and in the pixels near
 the top of the screenshot), what failed before any table, and plots whose
@@ -42,6 +44,7 @@ import pytest
 # every report kind rendered in headless Chromium: `make quick` leaves it out
 pytestmark = pytest.mark.slow
 
+from osdk_conformance.bench import tap_hosts
 from osdk_conformance.core.paths import ROOT
 from osdk_conformance.core.wire import encode
 from osdk_conformance.device.analysis import Analyzer
@@ -116,6 +119,12 @@ def fuzz(out: Path) -> Page:
             "-q"], cwd=out)
 
 
+def tap_fail(out: Path) -> Page:
+    """`osdkc tap --replay` of a session recorded through the tap: a host that streams movement at 5 Hz."""
+    session = tap_hosts.run_session("slow-cadence", 1, out / "tap-session", "m100-fw3.1", seconds=1.0)
+    return _command("tap-fail", out, ["tap", "--replay", session["capture"], "--profile", "m100-fw3.1", "-q"])
+
+
 def render(page: Page, out: Path) -> Page:
     """One Chromium run per page: its screenshot and its DOM after layout,
     in a fresh profile, with every network feature off (the page must not
@@ -141,8 +150,9 @@ def pages(tmp_path_factory) -> dict[str, Page]:
     # the passing device run alone: it measures rates and motion, and a simulator not read in time
     # loses frames as a UART does; then the rest side by side, each page rendered once it is written
     passed = device_pass(out)
+    tapped = tap_fail(out)   # a live session too, recorded through the tap, then judged from its capture
     with ThreadPoolExecutor(max_workers=5) as pool:
-        jobs = [pool.submit(render, passed, out)]
+        jobs = [pool.submit(render, passed, out), pool.submit(render, tapped, out)]
         jobs += [pool.submit(lambda f: render(f(out), out), f) for f in (fuzz, device_fail, run_pass, run_fail)]
         rendered = {p.kind: p for p in (j.result() for j in jobs)}
     keep = os.environ.get("OSDK_REPORT_SHOTS")
@@ -153,9 +163,9 @@ def pages(tmp_path_factory) -> dict[str, Page]:
     return rendered
 
 
-EXIT = {"run-pass": 0, "run-fail": 1, "device-pass": 0, "device-fail": 1, "fuzz": 1}
+EXIT = {"run-pass": 0, "run-fail": 1, "device-pass": 0, "device-fail": 1, "fuzz": 1, "tap-fail": 1}
 FAILING = [k for k, status in EXIT.items() if status]
-PLOTTED = ("device-pass", "device-fail", "fuzz")
+PLOTTED = ("device-pass", "device-fail", "fuzz", "tap-fail")
 
 
 # ---- reading the rendered page ---------------------------------------------------------------
@@ -374,7 +384,8 @@ def path_points(d: str) -> list[list[tuple[float, float]]]:
 def test_every_plot_panel_is_drawn(pages, kind):
     dom = pages[kind].dom
     figures = dom.all("figure")
-    assert len(figures) == (1 if kind == "fuzz" else 5)
+    first = 1 if kind == "tap-fail" else 0   # the tap's page: the host's commands come first
+    assert len(figures) == (1 if kind == "fuzz" else 5 + first)
     for fig in figures:
         [svg] = dom.all("svg", inside=fig)
         panels = dom.all("g", "panel", inside=svg)
@@ -387,7 +398,7 @@ def test_every_plot_panel_is_drawn(pages, kind):
             assert series and any(len(run) >= 2 for run in path_points(series[0].attrs["d"])), name
     # small multiples: one panel per broadcast item, not one chart of fourteen lines
     if kind != "fuzz":
-        rates = dom.all("g", "panel", inside=dom.all("svg")[0])
+        rates = dom.all("g", "panel", inside=dom.all("svg")[first])
         assert len(rates) >= 10 and len({p.attrs["data-series"] for p in rates}) == len(rates)
 
 

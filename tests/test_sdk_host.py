@@ -431,6 +431,26 @@ def test_sdk_host_stack_runs_a_whole_session_on_every_profile(tmp_path, baud, en
     assert ran or tree.bauds.get(baud)
 
 
+@needs_sdk
+@pytest.mark.slow
+@pytest.mark.realtime
+def test_through_the_tap_the_session_still_passes_and_the_tap_describes_it(tmp_path):
+    tree = sdk_host.detect(Path(OSDK_SRC).resolve())
+    profile = next((p for p in tree.profiles if p not in tree.refusals), None)
+    if profile is None or KNOWN_SDK_FAILURES.get(tree.version):
+        pytest.skip(f"SDK {tree.version}: no profile whose whole session passes to compare with")
+    proc = subprocess.run([sys.executable, "-m", "osdk_conformance.cli", "sdk", "host-test", "--osdk", OSDK_SRC,
+                           "--out", str(tmp_path / "build"), "--profile", profile, "--through-tap",
+                           "--log-dir", str(tmp_path / "logs")], capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+    for step in (*sdk_host.STEPS, "tap"):
+        assert f"PASS  {step}" in proc.stdout, proc.stdout
+    tap = json.loads((tmp_path / "logs" / f"{profile}.tap.json").read_text())
+    assert tap["verdict"] == "PASS" and tap["host"]["movement commands"] == 150
+    cadence = next(c for c in tap["checks"] if c["id"] == "host.cadence")
+    assert cadence["status"] == "pass", cadence
+
+
 def _control_device(log: Path, profile: str) -> int | None:
     lines = log.read_text().splitlines() if log.is_file() else []
     if not lines:

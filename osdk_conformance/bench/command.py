@@ -29,6 +29,10 @@ Sections (`--only`, default all, in this order):
 - doctor (only when named in --only: about ten minutes at 20 runs): seeded
   diagnoses of `osdkc doctor` against each link fault it must tell apart;
   each must name that fault and no other (doctor_faults.py, docs/DOCTOR.md).
+- tap (only when named in --only: about 15 minutes at 20 runs): seeded
+  sessions of `osdkc host` through `osdkc tap` beside busy loops: a healthy
+  host must pass, each planted host bug must fail the one check it names
+  (tap_hosts.py, docs/TAP.md).
 
 Nothing here asserts a speed: the numbers are printed, written as JSON
 (--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
@@ -46,7 +50,7 @@ import sys
 import time
 from pathlib import Path
 
-from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, doctor_faults as bench_doctor, report as bench_report, sections as bench_sections
+from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, doctor_faults as bench_doctor, tap_hosts as bench_tap, report as bench_report, sections as bench_sections
 from osdk_conformance.bench.corpus import CORPORA
 from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
@@ -54,7 +58,7 @@ from osdk_conformance.bench.report import HOUR_CORPUS
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import non_negative_int, positive_float, positive_int
 
-SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor")
+SECTIONS = ("decode", "api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor", "tap")
 DEFAULT_SECTIONS = SECTIONS[:7]
 QUICK_CORPUS_SECONDS = 60.0
 DEFAULTS = {  # (full, --quick)
@@ -64,12 +68,12 @@ DEFAULTS = {  # (full, --quick)
 }
 FUZZ_SEED = 1
 REPEATS, BUDGET, TIMEOUT = 3, 120.0, 1800.0
-RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE, FUZZ_RUNS, BUG_RUNS, DOCTOR_RUNS = 200, 20, 2, 40, 20, 20
+RELIABILITY_RUNS, FAULT_RUNS, BUSY_PER_CORE, FUZZ_RUNS, BUG_RUNS, DOCTOR_RUNS, TAP_RUNS = 200, 20, 2, 40, 20, 20, 20
 
 
 def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> None:
     ap.add_argument("--only", metavar="SECTIONS",
-                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability and doctor)")
+                    help=f"comma-separated sections to run ({', '.join(SECTIONS)}; default all but reliability, doctor and tap)")
     ap.add_argument("--quick", action="store_true",
                     help=f"a fast check: corpora of {QUICK_CORPUS_SECONDS:g} s, "
                          f"{DEFAULTS['fuzz_examples'][1]} fuzz examples, {DEFAULTS['soak_seconds'][1]:g} s of soak, "
@@ -113,6 +117,9 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="reliability: runs at a time (default 1)")
     ap.add_argument("--doctor-runs", type=positive_int, default=DOCTOR_RUNS, metavar="N",
                     help=f"doctor: seeded diagnoses of each link fault (default {DOCTOR_RUNS})")
+    ap.add_argument("--tap-runs", type=positive_int, default=TAP_RUNS, metavar="N",
+                    help=f"tap: seeded sessions of a healthy host and of each planted host bug through osdkc tap, "
+                         f"beside --busy-per-core busy loops per core (default {TAP_RUNS})")
     ap.add_argument("--json", action="store_true",
                     help="print every number as one JSON object instead of the tables (as every --json does)")
     ap.add_argument("--markdown", metavar="FILE",
@@ -152,6 +159,8 @@ def command_line(args: argparse.Namespace) -> str:
             parts += [f"--{opt.replace('_', '-')}", f"{v:g}" if isinstance(v, float) else str(v)]
     if "doctor" in (args.only or ""):
         parts += ["--doctor-runs", str(args.doctor_runs)]
+    if "tap" in (args.only or ""):
+        parts += ["--tap-runs", str(args.tap_runs)]
     if args.quick:
         parts.append("--quick")
     for opt, default in (("repeats", REPEATS), ("budget", BUDGET), ("timeout", TIMEOUT), ("runs", RELIABILITY_RUNS),
@@ -220,6 +229,11 @@ def run_bench(args: argparse.Namespace) -> int:
         _log(f"doctor: {args.doctor_runs} seeded diagnoses of each of {len(bench_doctor.FAULTS)} link faults")
         result["doctor"] = bench_doctor.measure(args.doctor_runs, _log)
         result["doctor"]["command"] = command_line(args)
+    if "tap" in sections:
+        _log(f"tap: {args.tap_runs} seeded sessions of each of {len(bench_tap.CASES)} hosts, "
+             f"{args.busy_per_core} busy loops per core")
+        result["tap"] = bench_tap.measure(args.tap_runs, _log, args.busy_per_core)
+        result["tap"]["command"] = command_line(args)
     if "footprint" in sections:
         _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only")
         result["footprint"] = bench_footprint.measure()
@@ -233,6 +247,8 @@ def run_bench(args: argparse.Namespace) -> int:
         text += "\n\n" + bench_footprint.terminal(result["footprint"])
     if "doctor" in result:
         text += "\n\nosdkc doctor, seeded diagnoses of each link fault:\n" + bench_doctor.markdown(result["doctor"])
+    if "tap" in result:
+        text += "\n\nosdkc tap, seeded host sessions:\n" + bench_tap.markdown(result["tap"])
     print(json.dumps(result, indent=1) if args.json else text)
     try:
         if md_path and sections != ["footprint"]:
@@ -248,8 +264,8 @@ def _ok(result: dict) -> bool:
     decode = result.get("decode")
     if decode and (decode["mismatches"] or not all(r["ok"] for c in decode["corpora"] for r in c["results"])):
         return False
-    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor")
-               if s in result)
+    return all(result[s]["ok"] for s in ("api", "run", "fuzz", "acceptance", "device_fuzz", "footprint", "reliability", "doctor",
+                                         "tap") if s in result)
 
 
 def _log(text: str) -> None:

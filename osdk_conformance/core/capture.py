@@ -308,6 +308,6 @@ def read_capture(path: str | Path) -> Capture:
     return Capture(reader.comment, records, reader.partial_tail, reader.interfaces)
 
 
-def default_capture_path(root: str | Path = "captures") -> Path:
+def default_capture_path(root: str | Path = "captures", tool: str = "device") -> Path:
     stamp = time.strftime("%Y%m%d-%H%M%S")
-    return Path(root) / f"device-{stamp}-{os.getpid()}.pcapng"
+    return Path(root) / f"{tool}-{stamp}-{os.getpid()}.pcapng"

@@ -141,6 +141,10 @@ class Analyzer:
         # with one mode byte and kind of setpoint, [first t, mode byte, all setpoints zero, last t]
         self.movement: list[list] = []
         self.on_broadcast: Callable[[float, Any], None] | None = None
+        # `osdkc tap` judges the sender of the tx bytes too (tap/judge.py): every event of the tx stream, with
+        # the frame opened (None for bytes the receiver dropped), and every rx frame opened
+        self.on_tx: Callable[[float, Any, Any], None] | None = None
+        self.on_rx_frame: Callable[[float, Any], None] | None = None
 
     # ---- input -----------------------------------------------------------
 
@@ -158,15 +162,20 @@ class Analyzer:
     def feed_tx(self, t: float, chunk: bytes) -> None:
         with self.lock:
             for ev in self.tx_deframer.feed(chunk):
-                if isinstance(ev, Frame):
-                    op = open_frame(ev.raw, self.key)
-                    if not op.is_ack and op.cmd_set is not None and op.session > 0:
-                        key, new = (op.session, op.seq), (t, op.cmd_set, op.cmd_id, op.value)
-                        old = self.sent.get(key)
-                        if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
-                            self.sent[key] = new
-                    if not op.is_ack and not op.problem and (op.cmd_set, op.cmd_id) == (1, 3) and op.value:
-                        self._movement(t, op.value)
+                if not isinstance(ev, Frame):
+                    if self.on_tx:
+                        self.on_tx(t, ev, None)
+                    continue
+                op = open_frame(ev.raw, self.key)
+                if self.on_tx:
+                    self.on_tx(t, ev, op)
+                if not op.is_ack and op.cmd_set is not None and op.session > 0:
+                    key, new = (op.session, op.seq), (t, op.cmd_set, op.cmd_id, op.value)
+                    old = self.sent.get(key)
+                    if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
+                        self.sent[key] = new
+                if not op.is_ack and not op.problem and (op.cmd_set, op.cmd_id) == (1, 3) and op.value:
+                    self._movement(t, op.value)
 
     def _movement(self, t: float, value: bytes) -> None:
         mode, zero = value[0], not any(value[1:])
@@ -240,6 +249,8 @@ class Analyzer:
                 self.encrypted_unopened += 1
             self._decode_error("undecodable", op.problem)
             return
+        if self.on_rx_frame:
+            self.on_rx_frame(t, op)
         if op.is_ack:
             with self.ack_cond:
                 key = (op.session, op.seq)

@@ -18,6 +18,7 @@ used (missing file, unsupported SDK version, no compiler, build error).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import hashlib
 import json
 import os
@@ -707,16 +708,73 @@ def run_profile(exe: Path, profile: str, args: argparse.Namespace, work: Path, t
     sim_args = ["--profile", profile, "--hold", "--app-id", str(args.app_id), "--key-env", KEY_ENV,
                 "--baud", str(baud), "--log-broadcast", str(log), "--log-acks", str(ack_log),
                 "--stats", str(stats_file)] + (["--encrypt"] if encrypt else [])
+    through_tap = getattr(args, "through_tap", False)
+    tap_json = work / f"{profile}.tap.json"
     with spawned(*sim_args, env=env, new_session=True) as (port, sim):
-        session = drive(exe, sim, port, profile, args.app_id, args.frames, args.moves, restore, env,
-                        timeout=args.frames / 50 * 3 + args.moves / 50 * 3 + 30, baud=baud, encrypt=encrypt)
+        with (tapped(port, profile, baud, work, env) if through_tap else contextlib.nullcontext(port)) as host_port:
+            session = drive(exe, sim, host_port, profile, args.app_id, args.frames, args.moves, restore, env,
+                            timeout=args.frames / 50 * 3 + args.moves / 50 * 3 + 30, baud=baud, encrypt=encrypt)
     (work / f"{profile}.driver.jsonl").write_text(
         "".join(json.dumps(e) + "\n" for e in [*session.steps.values(), *session.broadcasts])
         + "".join(json.dumps({"ev": "log", "text": t}) + "\n" for t in session.logs))
     stats = json.loads(stats_file.read_text()) if stats_file.is_file() else {}
     refusal = tree.refusals.get(profile) if tree else None
-    return _verdicts(profile, session, compare(profile, log, session.broadcasts, session.exposed), stats,
-                     args.frames, read_acks(ack_log), refusal, encrypt)
+    steps = _verdicts(profile, session, compare(profile, log, session.broadcasts, session.exposed), stats,
+                      args.frames, read_acks(ack_log), refusal, encrypt)
+    if through_tap:
+        steps.append(tap_step(tap_json, session))
+    return steps
+
+
+@contextlib.contextmanager
+def tapped(fc_port: str, profile: str, baud: int, work: Path, env: dict):
+    """`osdkc tap` between the simulator at `fc_port` and the SDK: yields the
+    pseudo-terminal the SDK opens instead of the simulator's. The tap is
+    stopped (SIGINT) on the way out and leaves its capture and summary in
+    `work`."""
+    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "tap", "--fc", fc_port, "--profile",
+                             profile, "--baud", str(baud), "--key-env", KEY_ENV, "-q",
+                             "--capture", str(work / f"{profile}.tap.pcapng"),
+                             "--summary-json", str(work / f"{profile}.tap.json")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            start_new_session=True)
+    try:
+        url = proc.stdout.readline().strip()
+        if not url:
+            proc.wait()
+            raise UsageError("osdkc tap did not start: " + proc.stderr.read().strip())
+        yield url
+    finally:
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGINT)
+        try:
+            proc.communicate(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+
+
+def tap_step(summary: Path, s: Session) -> Step:
+    """The tap's verdict on the SDK's session: nothing failed, and it saw the
+    movement commands the driver says it sent, with the driver's mode byte."""
+    if not summary.is_file():
+        return Step("tap", "FAIL", "the tap wrote no summary")
+    tap = json.loads(summary.read_text())
+    bad = [f"{c['id']}: {c['message']}" for c in tap["checks"] if c["status"] in ("fail", "error")]
+    host = tap["host"]
+    ev = s.steps.get("movement") or {}
+    cadence = next((c["message"] for c in tap["checks"] if c["id"] == "host.cadence"), "")
+    detail = f"tap {tap['summary']}; {cadence}; mode bytes {host['mode bytes']}"
+    ok = not bad
+    if "sent" in ev and host["movement commands"] != ev["sent"]:
+        ok = False
+        detail += f"; the tap saw {host['movement commands']} movement commands, the driver sent {ev['sent']}"
+    if "flag" in ev and set(host["mode bytes"]) != {f"{ev['flag']:#04x}"}:
+        ok = False
+        detail += f"; the driver's mode byte is {ev['flag']:#04x}"
+    if bad:
+        detail += "; failed: " + " | ".join(bad[:3])
+    return Step("tap", "PASS" if ok else "FAIL", detail)
 
 
 # --------------------------------------------------------------------------
@@ -740,6 +798,9 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
     ap.add_argument("--encrypt", action="store_true",
                     help="the host encrypts its commands after activation and the simulator encrypts every frame "
                          "but the version and activation ACKs (both have the app key)")
+    ap.add_argument("--through-tap", action="store_true",
+                    help="put `osdkc tap` between the SDK and the simulator: the session must still succeed, and "
+                         "the tap's report (step `tap`) must find nothing wrong and see the SDK's movement commands")
 
 
 def _print_steps(profile: str, steps: list[Step]) -> None:
