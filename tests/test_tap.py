@@ -29,6 +29,7 @@ from osdk_conformance.tap.checks import TapOptions, host_results, pair_checks
 from osdk_conformance.device.checks import Options
 from osdk_conformance.tap.judge import HostJudge
 from osdk_conformance._construct.payload import osdk_payload
+from osdk_conformance.api import encode_broadcast_frame, encode_movement_control
 
 PROFILE = "m100-fw3.1"
 CLI = [sys.executable, "-m", "osdk_conformance.cli"]
@@ -296,6 +297,15 @@ class Wire:
         self.t += dt
         self.judge.feed_rx(self.t, encode(value=code.to_bytes(2, "little"), is_ack=True, session=session, seq=seq))
 
+    def move(self, dt: float = 0.02, mode: int = 0x48) -> None:
+        self.t += dt
+        self.judge.feed_tx(self.t, encode(cmd_set=1, cmd_id=3, value=encode_movement_control(mode, 1.0, 0, 0, 0)))
+
+    def control_device(self, device: int, seq: int, dt: float = 0.001) -> None:
+        self.t += dt
+        self.judge.feed_rx(self.t, encode_broadcast_frame(PROFILE, {"control_info": {"control_device": device}},
+                                                          seq=seq))
+
     def results(self) -> dict:
         o = TapOptions(device=Options(profile=PROFILE))
         return {r.id: r for r in host_results(self.judge, o) + pair_checks(self.judge, o)}
@@ -420,3 +430,68 @@ def test_a_flight_controller_port_that_goes_away_ends_the_tap_with_its_reports(t
     assert checks["tap.link"]["status"] == "error" and "flight controller's port" in checks["tap.link"]["message"]
     assert checks["link.connection"]["status"] == "fail", checks["link.connection"]
     assert checks["link.data"]["status"] == "pass"   # what came before it is judged and kept
+
+
+def _in_control(w: Wire) -> None:
+    w.host(0, 0, {"arbitrary": 0}, 2, 1)
+    w.ack(0, 0, 0, 2, 1)   # already activated
+    w.host(1, 0, {"request": 1}, 2, 2)
+    w.ack(1, 0, 2, 2, 2)   # obtained
+    w.control_device(2, 1)
+
+
+def test_movement_after_the_rc_took_control_back_is_a_pair_failure() -> None:
+    w = Wire()
+    _in_control(w)
+    for _ in range(10):
+        w.move()
+    w.control_device(0, 2)   # the RC's mode switch flipped: control went back to the remote controller
+    for _ in range(50):       # and the host streams on for a second
+        w.move()
+    r = w.results()["pair.control"]
+    assert r.status == "fail" and "control went to rc" in r.message, r.message
+
+
+def test_movement_that_stops_when_control_is_lost_is_no_failure() -> None:
+    w = Wire()
+    _in_control(w)
+    for _ in range(10):
+        w.move()
+    w.control_device(0, 2)
+    w.move(dt=0.1)   # one command already on its way
+    assert w.results()["pair.control"].status == "pass"
+
+
+def test_a_lost_control_frame_followed_by_movement_is_a_pair_failure() -> None:
+    w = Wire()
+    _in_control(w)
+    w.move()
+    w.t += 0.01
+    w.judge.feed_rx(w.t, encode(cmd_set=2, cmd_id=1, value=bytes([4])))   # "control authority lost", FC to host
+    for _ in range(40):
+        w.move()
+    r = w.results()["pair.control"]
+    assert r.status == "fail" and "0x02/0x01" in r.message, r.message
+
+
+def _cadence(gap: float, stalls: list[tuple[float, float]]):
+    from osdk_conformance.tap.checks import movement_checks
+
+    w = Wire()
+    _in_control(w)
+    for _ in range(20):
+        w.move()
+    start = w.t
+    w.move(dt=gap)
+    for _ in range(20):
+        w.move()
+    o = TapOptions(device=Options(profile=PROFILE), stalls=[(start + at, s) for at, s in stalls])
+    return {r.id: r for r in movement_checks(w.judge, o)}["host.cadence"]
+
+
+def test_a_gap_this_tap_read_late_is_not_blamed_on_the_host_and_a_longer_one_is() -> None:
+    assert _cadence(0.6, [(0.2, 0.3)]).status == "skip"            # 0.3 s of it the tap was not running
+    assert _cadence(0.6, [(0.2, 0.3)]).kind == "host too busy"
+    assert _cadence(1.0, [(0.2, 0.3)]).status == "fail"            # 0.7 s is still the host's
+    assert _cadence(0.6, []).status == "fail"
+    assert _cadence(0.3, []).status == "pass"

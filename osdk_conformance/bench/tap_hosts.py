@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 from osdk_conformance.bench.reliability import BusyLoops
+from osdk_conformance.bench.stand_in import SIM_NICE, favour
 from osdk_conformance.sim.host_bugs import BUGS
 
 KEY = "ab" * 32
@@ -60,6 +61,7 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
                            env=env)
     tap = host = None
     try:
+        favoured = favour(sim.pid)   # it stands in for a flight controller, which has a CPU of its own
         fc = _first_line(sim, "osdkc sim")
         summary, capture = work / "tap.json", work / "tap.pcapng"
         tap = subprocess.Popen(_cli("tap", "--fc", fc, "--profile", profile, "--baud", str(baud), "-q",
@@ -70,19 +72,22 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
         port = _first_line(tap, "osdkc tap")
         bugs = [] if case == "healthy" else ["--bug", case]
         t0 = time.monotonic()
-        host = subprocess.run(_cli("host", "--port", port, "--profile", profile, "--baud", str(baud),
-                                   "--app-id", str(APP_ID),
-                                   "--key-env", KEY_ENV, "--yes", "--seed", str(seed), "--seconds", str(seconds),
-                                   *bugs), capture_output=True, text=True, env=env, timeout=120)
+        host = subprocess.Popen(_cli("host", "--port", port, "--profile", profile, "--baud", str(baud),
+                                     "--app-id", str(APP_ID), "--key-env", KEY_ENV, "--yes", "--seed", str(seed),
+                                     "--seconds", str(seconds), *bugs),
+                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+        favoured = favour(host.pid) and favoured   # so does the host: the computer it runs on is not the tap's
+        host_err = host.communicate(timeout=120)[1]
         host_s = time.monotonic() - t0
         time.sleep(RELEASE_WAIT_S if case == "no-release" else 0.3)
         tap_status = _stop(tap, signal.SIGINT)
         out, err = tap.communicate()
     finally:
-        for p in (tap, sim):
+        for p in (host, tap, sim):
             if p is not None and p.poll() is None:
                 _stop(p, 15)
-    result = {"case": case, "seed": seed, "host_status": host.returncode, "host_stderr": host.stderr[-2000:],
+    result = {"case": case, "seed": seed, "host_status": host.returncode, "host_stderr": host_err[-2000:],
+              "favoured": favoured,
               "host_s": round(host_s, 2), "tap_status": tap_status, "tap_stdout": out[-4000:],
               "tap_stderr": err[-2000:], "capture": str(capture)}
     try:
@@ -110,6 +115,7 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
     """`runs` seeded sessions of each case, one at a time, beside busy loops."""
     out: dict = {"runs": runs, "baud": BAUD, "cases": {}}
     delays: dict[str, list[float]] = {}   # direction -> each session's p99 of the tap's forwarding delay, ms
+    favoured_all = True
     with BusyLoops(busy_per_core) as busy, tempfile.TemporaryDirectory(prefix="osdkc-tap-bench-") as tmp:
         for case in cases:
             right, wrong = 0, []
@@ -119,7 +125,10 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
                     right += 1
                 else:
                     wrong.append({"seed": seed, "host": r["host_status"], "tap": r["tap_status"],
-                                  "failed": failed_checks(r["summary"])})
+                                  "failed": failed_checks(r["summary"]),
+                                  "host_said": r["host_stderr"].strip().splitlines()[-1:],
+                                  "tap_said": r["tap_stderr"].strip().splitlines()[-2:]})
+                favoured_all = favoured_all and r["favoured"]
                 for name, m in r["summary"].get("meta", {}).items():
                     if name.endswith("forwarding delay p99 (ms)"):
                         delays.setdefault(name.split(" forwarding")[0], []).append(m)
@@ -131,7 +140,8 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
         except OSError:
             load = None
         out["load"] = {"busy_loops": busy.count, "cores": os.cpu_count() or 1,
-                       "load_average_1min_at_end": None if load is None else round(load, 2)}
+                       "load_average_1min_at_end": None if load is None else round(load, 2),
+                       "simulator_and_host_nice": SIM_NICE if favoured_all else 0}
     out["forwarding_delay_p99_ms"] = {d: {"median": sorted(v)[len(v) // 2], "max": max(v)} for d, v in delays.items()}
     out["ok"] = all(not c["wrong"] for c in out["cases"].values())
     return out
@@ -140,8 +150,9 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
 def markdown(result: dict) -> str:
     load = result["load"]
     rows = [f"Beside {load['busy_loops']} busy loops on {load['cores']} cores (load average "
-            f"{load['load_average_1min_at_end']} at the end), {result['runs']} seeded sessions of each at "
-            f"{result['baud']} baud:", "",
+            f"{load['load_average_1min_at_end']} at the end; the simulator and the host, which stand in for "
+            f"machines of their own, at nice {load['simulator_and_host_nice']}, the tap at the busy loops' 0), "
+            f"{result['runs']} seeded sessions of each at {result['baud']} baud:", "",
             "| host | the tap must | runs | right |", "|---|---|---|---|"]
     for case, c in result["cases"].items():
         must = "find nothing" if case == "healthy" else f"fail `{c['caught_by']}` and nothing else"

@@ -711,7 +711,8 @@ def run_profile(exe: Path, profile: str, args: argparse.Namespace, work: Path, t
     through_tap = getattr(args, "through_tap", False)
     tap_json = work / f"{profile}.tap.json"
     with spawned(*sim_args, env=env, new_session=True) as (port, sim):
-        with (tapped(port, profile, baud, work, env) if through_tap else contextlib.nullcontext(port)) as host_port:
+        with (tapped(port, profile, baud, work, env) if through_tap else contextlib.nullcontext((port, None))) as (
+                host_port, _):
             session = drive(exe, sim, host_port, profile, args.app_id, args.frames, args.moves, restore, env,
                             timeout=args.frames / 50 * 3 + args.moves / 50 * 3 + 30, baud=baud, encrypt=encrypt)
     (work / f"{profile}.driver.jsonl").write_text(
@@ -726,32 +727,14 @@ def run_profile(exe: Path, profile: str, args: argparse.Namespace, work: Path, t
     return steps
 
 
-@contextlib.contextmanager
 def tapped(fc_port: str, profile: str, baud: int, work: Path, env: dict):
-    """`osdkc tap` between the simulator at `fc_port` and the SDK: yields the
-    pseudo-terminal the SDK opens instead of the simulator's. The tap is
-    stopped (SIGINT) on the way out and leaves its capture and summary in
-    `work`."""
-    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "tap", "--fc", fc_port, "--profile",
-                             profile, "--baud", str(baud), "--key-env", KEY_ENV, "-q",
-                             "--capture", str(work / f"{profile}.tap.pcapng"),
-                             "--summary-json", str(work / f"{profile}.tap.json")],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
-                            start_new_session=True)
-    try:
-        url = proc.stdout.readline().strip()
-        if not url:
-            proc.wait()
-            raise UsageError("osdkc tap did not start: " + proc.stderr.read().strip())
-        yield url
-    finally:
-        if proc.poll() is None:
-            proc.send_signal(signal.SIGINT)
-        try:
-            proc.communicate(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.communicate()
+    """`osdkc tap` between the simulator at `fc_port` and the SDK: yields
+    (the pseudo-terminal the SDK opens instead of the simulator's, the tap's
+    process). The tap is stopped on the way out and leaves its capture and
+    summary in `work`."""
+    return spawned("--fc", fc_port, "--profile", profile, "--baud", str(baud), "--key-env", KEY_ENV, "-q",
+                   "--capture", str(work / f"{profile}.tap.pcapng"),
+                   "--summary-json", str(work / f"{profile}.tap.json"), env=env, new_session=True, command="tap")
 
 
 def tap_step(summary: Path, s: Session) -> Step:

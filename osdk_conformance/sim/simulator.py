@@ -1135,12 +1135,13 @@ def stop_child(proc) -> None:
 
 
 @contextlib.contextmanager
-def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
+def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False, command: str = "sim"):
     """`osdkc sim SIM_ARGS` in a child process: yields (url, process) once it
     has printed the URL of its port, and stops it on the way out. With
     `new_session` a Ctrl-C at the terminal does not reach it, so a host can
-    still hand back control through it before it is stopped."""
-    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", "sim", *sim_args],
+    still hand back control through it before it is stopped. `command`
+    "tap" runs `osdkc tap` the same way: it too prints its port first."""
+    proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", command, *sim_args],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
                             start_new_session=new_session)
     held = -1
@@ -1148,7 +1149,7 @@ def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False):
         url = proc.stdout.readline().strip()
         if not url:
             proc.wait()
-            raise UsageError("osdkc sim did not start: " + proc.stderr.read().strip())
+            raise UsageError(f"osdkc {command} did not start: " + proc.stderr.read().strip())
         held = _hold_terminal(url)
         yield url, proc
     finally:

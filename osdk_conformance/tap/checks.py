@@ -5,14 +5,16 @@ docs/TAP.md lists them with their limits.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 from osdk_conformance.core.rules import default_rules
 from osdk_conformance.device.analysis import Finding, percentile
+from osdk_conformance.device.hostload import HOST_TOO_BUSY
 from osdk_conformance.device.checks import (Options as DeviceOptions, decode_checks, link_checks, stream_checks,
                                              value_checks)
 from osdk_conformance.harness.report import FAIL, PASS, SKIP, Result
-from osdk_conformance.tap.judge import ACK_PATIENCE_S, NEEDS_ACK, HostJudge, finite
+from osdk_conformance.tap.judge import ACK_PATIENCE_S, NEEDS_ACK, HostJudge
 
 AXES = ("x", "y", "z", "yaw")
 # which of the four setpoints each range of a mode bounds (facts §2 row 0x01/0x03: roll-or-x, pitch-or-y,
@@ -31,7 +33,7 @@ class TapOptions:
     min_resend_s: float = 0.05        # a resend sooner than this after the last one is part of a storm
     ack_timeout: float = ACK_PATIENCE_S   # s an ACK may take before it is late
     release_grace: float = 2.0        # s of silence at the end that make a session over (control must be back)
-    stalls: list = field(default_factory=list)   # (t, s) this tap's reader was not scheduled (live runs)
+    stalls: list = field(default_factory=list)   # (t, s) this tap's mover was not scheduled (live runs: Link.late)
 
 
 def _finding(cat: str, cid: str, f: Finding, ok: str, bad: str, kind: str) -> Result:
@@ -190,7 +192,7 @@ def _setpoint_check(j: HostJudge) -> Result:
         for axis, v in zip(AXES, m.setpoints):
             r = ranges[RANGE_OF_AXIS[axis]]
             lo, hi = r.get("min"), r.get("max")
-            if not finite(v):
+            if not math.isfinite(v):
                 bad.append(f"{axis} {v}")
             elif (lo is not None and v < lo) or (hi is not None and v > hi):
                 bad.append(f"{axis} {v:g} {r.get('unit', '')} outside {lo if lo is not None else '-inf'}.."
@@ -216,20 +218,23 @@ def _cadence_check(j: HostJudge, o: TapOptions) -> Result:
     n = len(times)
     span = times[-1] - times[0]
     hz = (n - 1) / span if span > 0 else float("inf")
-    gaps = sorted(((b - a, a) for a, b in zip(times, times[1:])), reverse=True)
+    # a gap across a change of authority (released, obtained again) is two sessions of control, not a gap
+    changes = [t for t, _ in j.authority]
+    gaps = sorted(((b - a, a) for a, b in zip(times, times[1:]) if not any(a < t < b for t in changes)),
+                  reverse=True) or [(0.0, times[0])]
     longest, at = gaps[0]
-    stalled = [(t, s) for t, s in o.stalls if t < at + longest and t + s > at]
+    # how much of the longest gap this tap was not running: a gap it read late is partly its own
+    lost = sum(min(t + s, at + longest) - max(t, at) for t, s in o.stalls if t < at + longest and t + s > at)
     details = {"commands": n, "hz": round(hz, 2), "longest gap s": round(longest, 3),
                "under control s": round(sum(b - a for a, b in spans), 3),
                "median interval ms": round(1000 * percentile([g for g, _ in gaps], 50), 2)}
     msg = f"{n} movement commands under control at {hz:.1f} Hz, longest gap {longest * 1000:.0f} ms at {j.at(at)}"
     limits = f"(at least {o.min_movement_hz:g} Hz, gaps at most {o.max_movement_gap * 1000:.0f} ms)"
     if hz < o.min_movement_hz or longest > o.max_movement_gap:
-        if stalled:
+        if hz >= o.min_movement_hz and longest - lost <= o.max_movement_gap:
             return Result("host", "host.cadence", SKIP,
-                          f"not judged: this tap's reader was not scheduled for {max(s for _, s in stalled):.1f} s "
-                          f"during the longest gap, so the gap may be this machine's. Measured: {msg} {limits}",
-                          details, kind="host too busy")
+                          f"not judged: this tap was not scheduled for {lost:.2f} s of the longest gap, so the gap "
+                          f"may be this machine's. Measured: {msg} {limits}", details, kind=HOST_TOO_BUSY)
         slow = "too slow" if hz < o.min_movement_hz else "a gap too long"
         return Result("host", "host.cadence", FAIL, f"{msg}: {slow} {limits}; the flight controller stops "
                       "following movement that is not streamed (OSDK#456, #760)", details, kind="cadence")

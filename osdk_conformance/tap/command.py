@@ -191,7 +191,7 @@ def _live(args, mode: str, an, judge, opts: TapOptions) -> int:
     finally:
         for s, h in old.items():
             signal.signal(s, h)
-    opts.stalls = list(link.state.host_stalls)
+    opts.stalls = list(link.late)
     opts.device.host = clock.load()
     opts.device.duration = ran_s
     with an.lock:

@@ -16,7 +16,6 @@ one command waiting in that session, when the SEQ is the same.
 """
 from __future__ import annotations
 
-import math
 import struct
 from dataclasses import dataclass, field
 from typing import Any
@@ -36,6 +35,12 @@ FC_ONLY = ("broadcast", "lost_control")
 CONTROL_ONBOARD = 2                 # control_device enum: onboard_device
 OBTAINED, RELEASED = 2, 1            # control_ack codes
 MOVEMENT = struct.Struct("<B4f")     # mode byte, roll-or-x, pitch-or-y, throttle-or-z, yaw (facts §2 row 0x01/0x03)
+# After this long without an ACK a host may go on in the session: the
+# acceptance suite's own Commander waits 1 s per try (device/active.py).
+ACK_PATIENCE_S = 1.0
+# Two USB adapters on a Y-cable: how much sooner than its command an ACK may be read
+# (an FTDI adapter's latency timer is 16 ms by default; twice that and then some).
+REORDER_S = 0.05
 
 
 @dataclass
@@ -322,15 +327,3 @@ class HostJudge:
 
     def ranges(self, mode: int) -> dict[str, dict] | None:
         return self.rules.input_ranges(mode, self.profile)
-
-
-# Two USB adapters on a Y-cable: how much sooner than its command an ACK may be read
-# (an FTDI adapter's latency timer is 16 ms by default; twice that and then some).
-REORDER_S = 0.05
-# After this long without an ACK a host may go on in the session: the
-# acceptance suite's own Commander waits 1 s per try (device/active.py).
-ACK_PATIENCE_S = 1.0
-
-
-def finite(x: float) -> bool:
-    return math.isfinite(x)

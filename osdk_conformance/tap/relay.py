@@ -33,6 +33,7 @@ from osdk_conformance.sim.simulator import PtyTransport
 
 READ_SIZE = 65536
 POLL_S = 0.05          # how often the mover looks at its stop flag (a Ctrl-C ends it within this)
+LATE_S = 2 * POLL_S    # a round of the mover this much longer than its poll: it was kept from running
 MAX_BACKLOG = 8192     # bytes held for an end that does not take them; beyond that they are dropped
 FC, HOST = "fc", "host"
 
@@ -139,6 +140,7 @@ class Link:
         self.ends = {FC: fc, HOST: host}
         self.sink, self.cap, self.forward = sink, capture, forward
         self.state = LinkState()
+        self.late: list[tuple[float, float]] = []   # (t, s) the mover was not scheduled for LATE_S or more
         self.moved = {FC: Moved(), HOST: Moved()}
         self.stop = threading.Event()
         self.errors: list[str] = []
@@ -160,8 +162,11 @@ class Link:
         last = time.monotonic()
         while not self.stop.is_set():
             now = time.monotonic()
-            if now - last > HOST_STALL_S + POLL_S:
-                self.state.host_stalls.append((time.time() - (now - last), now - last))
+            if now - last > LATE_S:
+                # not scheduled: what arrived meanwhile is read late, and its gaps are this machine's
+                self.late.append((time.time() - (now - last), now - last))
+                if now - last > HOST_STALL_S + POLL_S:   # long enough for a UART's buffers to overflow
+                    self.state.host_stalls.append(self.late[-1])
             last = now
             wfds = [self.ends[n].fileno() for n, b in self._backlog.items() if b] if self.forward else []
             try:
