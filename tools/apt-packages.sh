@@ -9,7 +9,13 @@
 set -eu
 CLANG="clang-14=1:14.0.6-12 libclang-rt-14-dev=1:14.0.6-12"
 TSHARK="tshark=4.0.17-0+deb12u3"
-CHROMIUM="chromium=156.0.8078.108-1~deb12u1"
+# Debian's security archive keeps only the newest chromium build of a
+# release, and replaces it every few weeks: an exact pin stops installing on
+# the day the next build lands (156.0.8078.108 went that way). The pin is the
+# build stream; when the archive has moved past it, the release's current
+# build is installed and said so (the tests that use chromium check what a
+# page shows, not a browser version).
+CHROMIUM_STREAM="156.0.8078.*"
 PACKAGES=""
 if ! command -v clang-14 >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ]; then
     PACKAGES="$CLANG"
@@ -18,7 +24,7 @@ if ! command -v tshark >/dev/null 2>&1; then
     PACKAGES="$PACKAGES $TSHARK"
 fi
 if ! command -v chromium >/dev/null 2>&1; then
-    PACKAGES="$PACKAGES $CHROMIUM"
+    PACKAGES="$PACKAGES chromium"
 fi
 if [ -z "${PACKAGES# }" ]; then
     exit 0
@@ -37,4 +43,14 @@ case "$PACKAGES" in
         echo "wireshark-common wireshark-common/install-setuid boolean false" | $SUDO debconf-set-selections
         ;;
 esac
+case " $PACKAGES " in
+    *" chromium "*)
+        if apt-cache madison chromium | awk '{print $3}' | grep -q "^${CHROMIUM_STREAM%\*}"; then
+            PACKAGES=$(echo "$PACKAGES" | sed "s/ chromium\b/ chromium=$CHROMIUM_STREAM/")
+        else
+            echo "apt-packages: chromium $CHROMIUM_STREAM is no longer in the archive; installing its current build" >&2
+        fi
+        ;;
+esac
+set -f  # the chromium pin is a pattern for apt, not for the shell
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $PACKAGES >/dev/null

@@ -117,9 +117,10 @@ def add_arguments(ap: argparse.ArgumentParser, profiles: tuple[str, ...]) -> Non
                     help="reliability: runs at a time (default 1)")
     ap.add_argument("--doctor-runs", type=positive_int, default=DOCTOR_RUNS, metavar="N",
                     help=f"doctor: seeded diagnoses of each link fault (default {DOCTOR_RUNS})")
-    ap.add_argument("--tap-runs", type=positive_int, default=TAP_RUNS, metavar="N",
+    ap.add_argument("--tap-runs", type=non_negative_int, default=TAP_RUNS, metavar="N",
                     help=f"tap: seeded sessions of a healthy host and of each planted host bug through osdkc tap, "
-                         f"beside --busy-per-core busy loops per core (default {TAP_RUNS})")
+                         f"beside --busy-per-core busy loops per core (default {TAP_RUNS}; 0: only the latency "
+                         "the tap adds, idle and saturated)")
     ap.add_argument("--json", action="store_true",
                     help="print every number as one JSON object instead of the tables (as every --json does)")
     ap.add_argument("--markdown", metavar="FILE",

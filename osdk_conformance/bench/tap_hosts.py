@@ -7,14 +7,20 @@ from __future__ import annotations
 
 import json
 import os
+import select
+import signal
 import subprocess
 import sys
 import tempfile
 import time
+import tty
 from pathlib import Path
 
+from osdk_conformance._construct.payload import osdk_payload
 from osdk_conformance.bench.reliability import BusyLoops
 from osdk_conformance.bench.stand_in import SIM_NICE, favour
+from osdk_conformance.core.wire import encode
+from osdk_conformance.reference.values import broadcast_data, items
 from osdk_conformance.sim.host_bugs import BUGS
 
 KEY = "ab" * 32
@@ -52,13 +58,11 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
                 baud: int = BAUD) -> dict:
     """One session of `case` ("healthy" or a bug name): the host's exit
     status, the tap's, its summary JSON and where its capture is."""
-    import signal
-
     env = {**os.environ, KEY_ENV: KEY}
     work.mkdir(parents=True, exist_ok=True)
     sim = subprocess.Popen(_cli("sim", "--profile", profile, "--app-id", str(APP_ID), "--key-env", KEY_ENV,
-                                "--seed", str(seed), "--baud", str(baud)), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                           env=env)
+                                "--seed", str(seed), "--baud", str(baud)),
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
     tap = host = None
     try:
         favoured = favour(sim.pid)   # it stands in for a flight controller, which has a CPU of its own
@@ -97,6 +101,68 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
     return result
 
 
+LATENCY_PROBES = 2000
+
+
+def _pty() -> tuple[int, int, str]:
+    master, slave = os.openpty()
+    tty.setraw(slave)
+    return master, slave, os.ttyname(slave)
+
+
+def _through(write_fd: int, read_fd: int, frame: bytes) -> float:
+    """Seconds from writing `frame` on one side until all of it is read on the other."""
+    t0 = time.perf_counter()
+    os.write(write_fd, frame)
+    got = 0
+    while got < len(frame):
+        ready, _, _ = select.select([read_fd], [], [], 5.0)
+        if not ready:
+            raise RuntimeError("a probe did not come through within 5 s")
+        got += len(os.read(read_fd, 65536))
+    return time.perf_counter() - t0
+
+
+def measure_latency(probes: int = LATENCY_PROBES, profile: str = "m100-fw3.1") -> dict:
+    """What the tap adds to a byte's way, end to end: full broadcast frames
+    written into a pseudo-terminal the tap reads as the flight controller's
+    port, timed until they come out of the tap's pseudo-terminal for the
+    host, and the host's way back; against the same frames through a
+    pseudo-terminal alone. 100 frames a second, as a broadcast at 100 Hz."""
+    data = broadcast_data(profile, list(items(profile)), {})
+    frame = encode(cmd_set=0x02, cmd_id=0x00, value=osdk_payload(0x02, 0x00, False, profile).build(
+        {"body": {"data": data}}))
+    fc_m, fc_s, fc_path = _pty()
+    direct_m, direct_s, _ = _pty()
+    tap = subprocess.Popen(_cli("tap", "--fc", fc_path, "--profile", profile, "--baud", str(BAUD), "--no-capture",
+                                "-q"), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    host = -1
+    try:
+        port = _first_line(tap, "osdkc tap")
+        host = os.open(port, os.O_RDWR | os.O_NOCTTY)
+        tty.setraw(host)
+        out: dict[str, list[float]] = {"direct": [], "fc to host": [], "host to fc": []}
+        for n in range(probes):
+            out["direct"].append(_through(direct_m, direct_s, frame))
+            out["fc to host"].append(_through(fc_m, host, frame))
+            if n % 10 == 0:   # a host sends less: a command for every tenth frame
+                out["host to fc"].append(_through(host, fc_m, frame))
+            time.sleep(0.01)
+    finally:
+        if host >= 0:
+            os.close(host)
+        _stop(tap, signal.SIGINT)
+        for fd in (fc_m, fc_s, direct_m, direct_s):
+            os.close(fd)
+
+    def ms(v: list[float], p: float) -> float:
+        v = sorted(v)
+        return round(1000 * v[min(len(v) - 1, int(p / 100 * len(v)))], 3)
+
+    return {"frame_bytes": len(frame), "probes": probes,
+            **{way: {"p50_ms": ms(v, 50), "p99_ms": ms(v, 99), "max_ms": ms(v, 100)} for way, v in out.items()}}
+
+
 def failed_checks(summary: dict) -> list[str]:
     return [c["id"] for c in summary.get("checks", []) if c["status"] in ("fail", "error")]
 
@@ -113,11 +179,14 @@ def judged_right(case: str, result: dict) -> bool:
 
 def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CASES) -> dict:
     """`runs` seeded sessions of each case, one at a time, beside busy loops."""
-    out: dict = {"runs": runs, "baud": BAUD, "cases": {}}
+    out: dict = {"runs": runs, "baud": BAUD, "cases": {}, "latency": {"idle": measure_latency()}}
+    log(f"tap: latency idle: {out['latency']['idle']}")
     delays: dict[str, list[float]] = {}   # direction -> each session's p99 of the tap's forwarding delay, ms
     favoured_all = True
     with BusyLoops(busy_per_core) as busy, tempfile.TemporaryDirectory(prefix="osdkc-tap-bench-") as tmp:
-        for case in cases:
+        out["latency"]["saturated"] = measure_latency()
+        log(f"tap: latency saturated: {out['latency']['saturated']}")
+        for case in cases if runs else ():
             right, wrong = 0, []
             for seed in range(1, runs + 1):
                 r = run_session(case, seed, Path(tmp) / f"{case}-{seed}")
@@ -149,17 +218,30 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
 
 def markdown(result: dict) -> str:
     load = result["load"]
-    rows = [f"Beside {load['busy_loops']} busy loops on {load['cores']} cores (load average "
-            f"{load['load_average_1min_at_end']} at the end; the simulator and the host, which stand in for "
-            f"machines of their own, at nice {load['simulator_and_host_nice']}, the tap at the busy loops' 0), "
-            f"{result['runs']} seeded sessions of each at {result['baud']} baud:", "",
-            "| host | the tap must | runs | right |", "|---|---|---|---|"]
-    for case, c in result["cases"].items():
-        must = "find nothing" if case == "healthy" else f"fail `{c['caught_by']}` and nothing else"
-        rows.append(f"| {case} | {must} | {result['runs']} | {c['right']} |")
-    rows += ["", "The tap's forwarding delay (from its read() returning to the bytes written to the other end), "
-             "p99 of each session, over all sessions:", "", "| direction | median of the p99s, ms | worst p99, ms |",
-             "|---|---|---|"]
-    for d, v in result["forwarding_delay_p99_ms"].items():
-        rows.append(f"| {d} | {v['median']} | {v['max']} |")
+    rows = []
+    if result["cases"]:
+        rows = [f"Beside {load['busy_loops']} busy loops on {load['cores']} cores (load average "
+                f"{load['load_average_1min_at_end']} at the end; the simulator and the host, which stand in for "
+                f"machines of their own, at nice {load['simulator_and_host_nice']}, the tap at the busy loops' 0), "
+                f"{result['runs']} seeded sessions of each at {result['baud']} baud:", "",
+                "| host | the tap must | runs | right |", "|---|---|---|---|"]
+        for case, c in result["cases"].items():
+            must = "find nothing" if case == "healthy" else f"fail `{c['caught_by']}` and nothing else"
+            rows.append(f"| {case} | {must} | {result['runs']} | {c['right']} |")
+        rows.append("")
+    rows += [f"What the tap adds, end to end: a whole broadcast frame "
+             f"({result['latency']['idle']['frame_bytes']} bytes) written into the flight controller's "
+             "pseudo-terminal until all of it is read from the host's, 100 frames a second, against the same "
+             "frame through one pseudo-terminal alone (`direct`):", "",
+             "| machine | way | p50 ms | p99 ms | max ms |", "|---|---|---|---|---|"]
+    for load_name, lat in result["latency"].items():
+        for way in ("direct", "fc to host", "host to fc"):
+            v = lat[way]
+            rows.append(f"| {load_name} | {way} | {v['p50_ms']} | {v['p99_ms']} | {v['max_ms']} |")
+    if result["forwarding_delay_p99_ms"]:
+        rows += ["", "The tap's own forwarding delay (from its read() returning to the bytes written to the other "
+                 "end), p99 of each session, over all sessions:", "",
+                 "| direction | median of the p99s, ms | worst p99, ms |", "|---|---|---|"]
+        for d, v in result["forwarding_delay_p99_ms"].items():
+            rows.append(f"| {d} | {v['median']} | {v['max']} |")
     return "\n".join(rows) + "\n"

@@ -73,12 +73,20 @@ class KsyIndex:
 
     def type_for_class(self, cls: type) -> KsyType:
         """The ksy type a Kaitai-generated Python class was compiled from."""
-        module = cls.__module__.rsplit(".", 1)[-1]
-        parts = cls.__qualname__.split(".")
-        path: tuple[str, ...] = ()
-        for part in parts[1:]:
-            path = path + (snake_child(self, module, path, part),)
-        return self.types[(module, path)]
+        # Kept per class: model.from_kaitai asks once for every object it
+        # converts (some 90,000 times in a replay of the vectors by the
+        # kaitai-python testee), and the answer is a scan of every type of
+        # every file. An index is not changed once made (ksy.load caches it).
+        known = self.__dict__.setdefault("_types_by_class", {})
+        kt = known.get(cls)
+        if kt is None:
+            module = cls.__module__.rsplit(".", 1)[-1]
+            parts = cls.__qualname__.split(".")
+            path: tuple[str, ...] = ()
+            for part in parts[1:]:
+                path = path + (snake_child(self, module, path, part),)
+            kt = known[cls] = self.types[(module, path)]
+        return kt
 
     def raw_seq(self, kt: KsyType) -> list[dict]:
         """The seq of a type as the .ksy file writes it (every key of every

@@ -88,23 +88,26 @@ def from_kaitai(obj: Any) -> Any:
     """Model of a Kaitai-generated Python object, using the .ksy files for
     what the object cannot say: float widths, and that a plain int is an
     enum value the spec has no name for (the runtime leaves those as int)."""
+    # local: only this path needs the runtime. Imported once per model and
+    # handed down, not once per value: the import statement cost a third of
+    # the conversion when it ran at every level.
+    from kaitaistruct import KaitaiStruct
+
     index = ksy.load()
-    return _kaitai_value(obj, index, None)
+    return _kaitai_value(obj, index, None, KaitaiStruct)
 
 
-def _kaitai_value(value: Any, index: ksy.KsyIndex, f: ksy.KsyField | None) -> Any:
-    from kaitaistruct import KaitaiStruct  # local: only this path needs the runtime
-
-    if isinstance(value, KaitaiStruct):
+def _kaitai_value(value: Any, index: ksy.KsyIndex, f: ksy.KsyField | None, struct_class: type) -> Any:
+    if isinstance(value, struct_class):
         kt = index.type_for_class(type(value))
         out: dict[str, Any] = {}
         for name, sub in kt.fields.items():
             if name in SKIPPED_FIELDS or not hasattr(value, name):
                 continue
-            out[name] = _kaitai_value(getattr(value, name), index, sub)
+            out[name] = _kaitai_value(getattr(value, name), index, sub, struct_class)
         return out
     if isinstance(value, list):
-        return [_kaitai_value(v, index, f) for v in value]
+        return [_kaitai_value(v, index, f, struct_class) for v in value]
     if isinstance(value, enum.Enum):
         return enum_model(value.value, value.name)
     if isinstance(value, bool):

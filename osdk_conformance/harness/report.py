@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import html
 import json
+import re
 import time
 from collections import Counter
 from dataclasses import dataclass, field
@@ -127,10 +128,17 @@ def _junit_body(r: Result) -> str:
     return _xml_safe("\n".join(parts))
 
 
+# The characters _xml_safe replaces: the C0 controls but tab, newline and
+# carriage return, and U+FFFE and U+FFFF.
+_XML_UNSAFE = re.compile(r"[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
+
+
 def _xml_safe(text: str) -> str:
-    """XML 1.0 cannot carry most control characters, even escaped."""
-    return "".join(ch if ch in "\t\n\r" or (ord(ch) >= 0x20 and ch not in "\ufffe\uffff") else f"\\x{ord(ch):02x}"
-                   for ch in text)
+    """XML 1.0 cannot carry most control characters, even escaped: each
+    becomes the text \\xNN. One regular-expression pass (a JUnit report of
+    the whole suite has over 100,000 strings, nearly all clean; a Python
+    loop over their characters cost a second per run)."""
+    return _XML_UNSAFE.sub(lambda m: f"\\x{ord(m.group()):02x}", text)
 
 
 SKIP_EXAMPLES = 5   # ids named in the testcase that stands for a skip reason's cases
