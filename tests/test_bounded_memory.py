@@ -94,6 +94,7 @@ pytestmark = pytest.mark.slow
 from osdk_conformance.harness import hostile_streams
 from osdk_conformance.core.deframe import MAX_LEN, deframe
 from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.priority import keep_priority
 from osdk_conformance.harness.runner import BUNDLED_IMPLS, impl_argv
 
 MiB = 1 << 20
@@ -186,7 +187,7 @@ def bench(impl: str, kind: str, total: int, run: int = 0) -> Bench:
             open(os.path.join(tmp, "out"), "w+b") as out, open(os.path.join(tmp, "err"), "w+b") as err:
         rss_file = os.path.join(tmp, "rss")
         proc = subprocess.Popen([str(PEAK_RSS_BIN), rss_file, *argv], stdin=subprocess.PIPE, stdout=out,
-                                stderr=err, cwd=ROOT, start_new_session=True,
+                                stderr=err, cwd=ROOT, start_new_session=True, preexec_fn=keep_priority,
                                 env={**os.environ, **RUNTIME_ENV.get(impl, {})})
         # Against a hang only (a testee that stops reading would block the
         # writes for ever): generous for the slowest decoder on this stream.

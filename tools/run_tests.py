@@ -13,6 +13,11 @@ cores, the CPU idles through the realtime part. So both start together:
   scheduler gives a realtime test the CPU whenever it wants it, and the rest
   gets what it leaves. A realtime test therefore runs beside busy processes
   of lower priority, as a bench tool on a loaded laptop does.
+  Linux shares the CPU between sessions before it looks at nice values
+  (autogroup scheduling), so the testees, sanitizer and benchmark children
+  that the kit starts in sessions of their own take their nice value along
+  (osdk_conformance/core/priority.py); else they would compete with the
+  realtime part at full weight.
 
 Exit status: 0 when both parts pass; otherwise the first non-zero status of
 the parallel part, then of the realtime part; 130 or 143 when interrupted.

@@ -18,6 +18,7 @@ from pathlib import Path
 
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.priority import keep_priority
 
 POLL = 0.02  # s between checks for the child's end; the measured numbers come from the child or from rusage
 PEAK_RSS_BIN = ROOT / "conformance" / "baseline" / "build" / "osdk-peak-rss"
@@ -67,7 +68,8 @@ def _run(argv: list[str], timeout: float, tmp: Path, env: dict[str, str] | None,
         start = time.monotonic()
         try:
             proc = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL if discard_stdout else out,
-                                    stderr=err, cwd=ROOT, start_new_session=True, env=env)
+                                    stderr=err, cwd=ROOT, start_new_session=True, env=env,
+                                    preexec_fn=keep_priority)
         except OSError as e:
             return Child(argv, None, "", "", 0.0, 0.0, 0, f"cannot start {argv[0]}: {e.strerror or e}")
         problem = ""

@@ -60,6 +60,8 @@ import weakref
 from collections.abc import Sequence
 from typing import Any
 
+from osdk_conformance.core.priority import keep_priority
+
 TESTEE_CRASH = "testee_crash"
 TESTEE_TIMEOUT = "testee_timeout"
 STARTUP_SECONDS = 10.0
@@ -166,6 +168,7 @@ def _preexec(memory_bytes: int):
             resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         except (ValueError, OSError):
             pass
+        keep_priority()   # the testee has a session of its own
 
     return limit
 

@@ -38,6 +38,7 @@ from pathlib import Path
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import baud_rate, positive_int, uint32
 from osdk_conformance.core.paths import ROOT
+from osdk_conformance.core.priority import keep_priority
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
 from osdk_conformance.sdk.families import protocol
 from osdk_conformance.sdk.testee_build import detect as detect_family
@@ -387,7 +388,7 @@ def drive(exe: Path, sim: subprocess.Popen, port: str, profile: str, app_id: int
     s = Session()
     # its own process group: the terminal's Ctrl-C reaches us, and we stop it in order
     proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
-                            start_new_session=True)
+                            start_new_session=True, preexec_fn=keep_priority)
     lines: queue.Queue = queue.Queue()
     threading.Thread(target=_reader, args=(proc.stdout, lines), daemon=True).start()
     err: list[str] = []

@@ -37,6 +37,7 @@ from typing import Any, Sequence
 
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import positive_float
+from osdk_conformance.core.priority import keep_priority
 from osdk_conformance.harness import report, runner, vectors
 from osdk_conformance.harness.report import FAIL, Result
 from osdk_conformance.harness.runner import (EXIT_NOTHING_RAN, Progress, RunOutcome, compared_answers, coverage,
@@ -129,7 +130,7 @@ def _replay_alone(exe: Path, case: Any, timeout: float) -> str:
     line = json.dumps(request_of(case), separators=(",", ":")) + "\n"
     try:
         proc = subprocess.run([str(exe)], input=line.encode(), capture_output=True, timeout=timeout,
-                              start_new_session=True)
+                              start_new_session=True, preexec_fn=keep_priority)
     except (OSError, subprocess.SubprocessError):
         return ""
     return proc.stderr.decode("utf-8", "replace")

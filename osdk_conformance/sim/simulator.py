@@ -50,6 +50,7 @@ from osdk_conformance.core.deframe import Deframer, Frame
 from osdk_conformance.core.errors import UsageError, exit_status_of_signal
 from osdk_conformance.core.options import (baud_rate, non_negative_float, non_negative_int, probability, rate_change,
                                            tcp_port, uint32)
+from osdk_conformance.core.priority import keep_priority
 from osdk_conformance.core.rules import hz_of_code, profile as load_profile, profile_names
 from osdk_conformance.core.tty import split_speeds
 from osdk_conformance.core.wire import encode, key_option, open_frame
@@ -1143,7 +1144,7 @@ def spawned(*sim_args: str, env: dict | None = None, new_session: bool = False, 
     "tap" runs `osdkc tap` the same way: it too prints its port first."""
     proc = subprocess.Popen([sys.executable, "-m", "osdk_conformance.cli", command, *sim_args],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
-                            start_new_session=new_session)
+                            start_new_session=new_session, preexec_fn=keep_priority if new_session else None)
     held = -1
     try:
         url = proc.stdout.readline().strip()
