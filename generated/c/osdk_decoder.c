@@ -36,9 +36,12 @@ double osdk_f64_from_bits(uint64_t bits)
     return d;
 }
 
+/* What a stream given no buffer reads from: one byte, never read (its size is 0). */
+static const uint8_t osdk_no_bytes[1];
+
 void osdk_stream_init(osdk_stream_t *io, const uint8_t *data, size_t size)
 {
-    io->data = data;
+    io->data = data ? data : osdk_no_bytes;
     io->size = data ? size : 0;
     io->pos = 0;
     io->base = 0;

@@ -90,6 +90,9 @@ typedef struct {
     unsigned bitcount;
 } osdk_stream_t;
 
+/* data may be NULL (then size is taken as 0): the stream then reads from a
+ * static empty buffer, so that no decoder ever does arithmetic on a null
+ * pointer (NULL + 0 is undefined in C99, 6.5.6). */
 void osdk_stream_init(osdk_stream_t *io, const uint8_t *data, size_t size);
 bool osdk_read_uint(osdk_stream_t *io, unsigned nbytes, int big_endian, uint64_t *out);
 bool osdk_read_bits_le(osdk_stream_t *io, unsigned nbits, uint64_t *out);
@@ -104,11 +107,16 @@ uint64_t osdk_peek_bits_le(const uint8_t *buf, unsigned bit_offset, unsigned nbi
 osdk_status_t osdk_fail(osdk_error_t *err, osdk_status_t status, const char *type, const char *field,
                         const osdk_stream_t *io);
 
-/* Kaitai integer division and modulo (floor semantics). */
+/* Kaitai integer division and modulo (floor semantics), defined for every
+ * pair of arguments: a divisor of 0 gives 0, and INT64_MIN / -1, whose
+ * quotient 2^63 has no int64_t, gives INT64_MIN (two's complement
+ * wrap-around); C leaves a / b and a % b undefined there. Any remainder
+ * by -1 is 0. */
 static inline int64_t osdk_kdiv(int64_t a, int64_t b)
 {
     int64_t q;
     if (b == 0) return 0;
+    if (b == -1) return a == INT64_MIN ? INT64_MIN : -a;
     q = a / b;
     if ((a % b != 0) && ((a < 0) != (b < 0))) q--;
     return q;
@@ -117,7 +125,7 @@ static inline int64_t osdk_kdiv(int64_t a, int64_t b)
 static inline int64_t osdk_kmod(int64_t a, int64_t b)
 {
     int64_t r;
-    if (b == 0) return 0;
+    if (b == 0 || b == -1) return 0;
     r = a % b;
     if (r != 0 && ((r < 0) != (b < 0))) r += b;
     return r;
