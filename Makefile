@@ -15,7 +15,7 @@ JS_OK  := tools/ksc/node_modules/.installed
 # every module it imports from source again.
 unexport PYTHONDONTWRITEBYTECODE
 
-.PHONY: setup system-packages testees examples kit test quick properties memory regen check-generated vectors bench fuzz clean
+.PHONY: setup system-packages testees examples kit test quick properties memory prove regen check-generated vectors bench fuzz clean
 
 # Bundled testees in other languages, each built by its own Makefile with
 # the language's standard tool (npm, Maven, go build, cc).
@@ -100,6 +100,12 @@ properties: setup
 # the suite runs a smoke subset of it). About 3 minutes on 2 cores.
 memory: setup
 	OSDK_MEMORY_CAMPAIGN=1 $(BIN)/pytest -q -n $(JOBS) tests/test_bounded_memory.py
+
+# The proof (docs/VERIFICATION.md): Frama-C WP proves the units of the
+# generated C library that carry contracts free of runtime errors; prover
+# answers are cached per goal in .cache/prove/. Fails on any unproved goal.
+prove: setup
+	$(BIN)/python tools/prove.py
 
 # Benchmarks (docs/PERFORMANCE.md): every section, the full corpora; rewrites
 # the results block of docs/PERFORMANCE.md. Takes tens of minutes.

@@ -3,12 +3,15 @@
 # machine has: clang with its sanitizer and libFuzzer runtimes, for the C
 # decoder's sanitizer tests and fuzz smoke runs, tshark, which dissects
 # captures with the generated Wireshark dissector (tests/test_wireshark.py),
-# and chromium, which renders the HTML reports headless to check what a
-# reader sees (tests/test_report_pages.py).
+# chromium, which renders the HTML reports headless to check what a reader
+# sees (tests/test_report_pages.py), and Frama-C with Why3, z3 and cvc4,
+# which prove units of the generated C library (tools/prove.py).
 # Pinned to Debian 12's versions; each is skipped when it is already there.
 set -eu
 CLANG="clang-14=1:14.0.6-12 libclang-rt-14-dev=1:14.0.6-12"
 TSHARK="tshark=4.0.17-0+deb12u3"
+# Frama-C's WP and the provers it reaches through Why3 (tools/prove.py, `make prove`)
+PROVERS="frama-c-base=20220511-manganese-3+b4 why3=1.5.1-1+b2 z3=4.8.12-3.1 cvc4=1.8-3"
 # Debian's security archive keeps only the newest chromium build of a
 # release, and replaces it every few weeks: an exact pin stops installing on
 # the day the next build lands (156.0.8078.108 went that way). The pin is the
@@ -22,6 +25,10 @@ if ! command -v clang-14 >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-14/lib/clang/14
 fi
 if ! command -v tshark >/dev/null 2>&1; then
     PACKAGES="$PACKAGES $TSHARK"
+fi
+if ! command -v frama-c >/dev/null 2>&1 || ! command -v why3 >/dev/null 2>&1 || ! command -v z3 >/dev/null 2>&1 \
+        || ! command -v cvc4 >/dev/null 2>&1; then
+    PACKAGES="$PACKAGES $PROVERS"
 fi
 if ! command -v chromium >/dev/null 2>&1; then
     PACKAGES="$PACKAGES chromium"

@@ -5,6 +5,9 @@
 void osdk_acks_init(osdk_acks_t *t)
 {
     unsigned i;
+    /*@ loop invariant 0 <= i <= OSDK_ACK_SESSIONS;
+        loop assigns i, t->slot[0 .. OSDK_ACK_SESSIONS - 1].waiting;
+        loop variant OSDK_ACK_SESSIONS - i; */
     for (i = 0; i < OSDK_ACK_SESSIONS; i++) t->slot[i].waiting = false;
 }
 

@@ -33,11 +33,19 @@ typedef struct {
 } osdk_acks_t;
 
 /* Every slot empty. */
+/*@ requires \valid(t);
+    assigns t->slot[0 .. OSDK_ACK_SESSIONS - 1].waiting; */
 void osdk_acks_init(osdk_acks_t *t);
 /* A plain command frame that decoded: it takes its session's slot (nothing happens in sessions 0 and 1). */
+/*@ requires \valid(t);
+    assigns t->slot[session]; */
 void osdk_acks_command(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t cmd_set, uint8_t cmd_id);
 /* A plain ACK frame (header-only ones too): the command it answers, taken out of its session's slot;
  * false when its session has no slot, the slot is empty or holds another SEQ (the slot then stays). */
+/*@ requires \valid(t) && \valid(cmd_set) && \valid(cmd_id);
+    requires \separated(t, cmd_set, cmd_id);
+    assigns t->slot[session].waiting, *cmd_set, *cmd_id;
+    ensures \result ==> session >= OSDK_ACK_FIRST_SESSION && session < OSDK_ACK_SESSIONS; */
 bool osdk_acks_take(osdk_acks_t *t, uint8_t session, uint16_t seq, uint8_t *cmd_set, uint8_t *cmd_id);
 
 #ifdef __cplusplus

@@ -76,6 +76,9 @@ uint16_t osdk_crc16(const uint8_t *data, size_t len)
 {
     uint16_t reg = 0x3aa3u;
     size_t i;
+    /*@ loop invariant 0 <= i <= len;
+        loop assigns i, reg;
+        loop variant len - i; */
     for (i = 0; i < len; i++) {
         reg = ((uint16_t)(reg >> 8)) ^ crc16_table[(reg ^ data[i]) & 0xffu];
     }
@@ -87,6 +90,9 @@ uint32_t osdk_crc32(const uint8_t *data, size_t len)
 {
     uint32_t reg = 0x00003aa3u;
     size_t i;
+    /*@ loop invariant 0 <= i <= len;
+        loop assigns i, reg;
+        loop variant len - i; */
     for (i = 0; i < len; i++) {
         reg = ((uint32_t)(reg >> 8)) ^ crc32_table[(reg ^ data[i]) & 0xffu];
     }

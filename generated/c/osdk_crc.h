@@ -21,7 +21,14 @@ extern "C" {
 #define OSDK_CRC16_CHECK 0x2752u
 #define OSDK_CRC32_CHECK 0xe4d9dc14u
 
+/* data holds len bytes (data may be NULL when len is 0). The comments
+ * that open with an @ are ACSL contracts: what `make prove` proves the
+ * functions against (docs/VERIFICATION.md). */
+/*@ requires len == 0 || \valid_read(data + (0 .. len - 1));
+    assigns \nothing; */
 uint16_t osdk_crc16(const uint8_t *data, size_t len);
+/*@ requires len == 0 || \valid_read(data + (0 .. len - 1));
+    assigns \nothing; */
 uint32_t osdk_crc32(const uint8_t *data, size_t len);
 
 #ifdef __cplusplus

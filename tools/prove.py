@@ -1,0 +1,164 @@
+#!/usr/bin/env python3
+"""`make prove`: Frama-C's WP proves units of the generated C library free of
+runtime errors, against the ACSL contracts tools/cgen emits.
+
+For each unit (one generated .c file, every function in it) Frama-C's RTE
+plugin turns every operation C leaves undefined into a goal (a memory access
+out of its object, pointer arithmetic outside an object, a signed overflow,
+a shift out of range, a division by zero) and WP proves those goals, the
+contracts (`requires` met at every call, `assigns` the only writes) and the
+loops' invariants and variants (termination) with z3 and cvc4. A unit is
+proved when every goal is; one goal not proved fails the run (exit 1).
+
+WP's cache (`-wp-cache update`, in .cache/prove/ of the checkout) keeps each
+prover's answer per goal: a second run asks the provers only about goals
+that changed. Per unit it prints goals, proved, time, and what WP assumed
+about memory (its "memory model hypotheses": that two regions do not
+overlap); docs/VERIFICATION.md says what the proof covers and what not.
+
+Exit status: 0 every goal proved, 1 a goal not proved, 2 Frama-C missing,
+a unit that does not parse, or bad arguments.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SOURCE = ROOT / "generated" / "c"
+CACHE = ROOT / ".cache" / "prove"
+
+# What is proved today: the units whose every function has a contract. The
+# decoder, the deframer and the encoders follow (issue 29, docs/VERIFICATION.md).
+UNITS = ("osdk_crc.c", "osdk_acks.c")
+
+TIMEOUT_S = 10          # per goal and prover
+WP = ["-wp", "-wp-rte", "-warn-invalid-pointer", "-wp-prover", "z3,cvc4", "-wp-timeout", str(TIMEOUT_S)]
+HYPOTHESES = re.compile(r"Memory model hypotheses for function '([^']+)':\s*/\*@\s*behavior wp_typed:\s*"
+                        r"requires (.*?);\s*\*/", re.S)
+
+
+@dataclass
+class Unit:
+    name: str
+    seconds: float = 0.0
+    goals: int = 0
+    proved: int = 0
+    functions: dict[str, tuple[int, int]] = field(default_factory=dict)   # name -> (goals, proved)
+    unproved: list[str] = field(default_factory=list)                     # property names
+    assumed: dict[str, str] = field(default_factory=dict)                 # function -> WP's hypothesis
+    problem: str = ""                                                      # Frama-C did not run through
+
+
+def why3_config() -> Path:
+    """WP reaches z3 and cvc4 through Why3, which finds them only in its
+    configuration: one of our own, detected once, not the user's ~/.why3.conf."""
+    conf = CACHE / "why3.conf"
+    if not conf.is_file():
+        CACHE.mkdir(parents=True, exist_ok=True)
+        partial = conf.with_suffix(".part")
+        subprocess.run(["why3", "-C", str(partial), "config", "detect"], capture_output=True, check=False)
+        if partial.is_file():
+            partial.replace(conf)
+    return conf
+
+
+def prove(unit: str, source: Path, jobs: int, cache: Path | None) -> Unit:
+    out = Unit(unit)
+    with tempfile.TemporaryDirectory(prefix="osdk-prove-") as tmp:
+        report = Path(tmp) / "report.json"
+        cmd = ["frama-c", f"-cpp-extra-args=-I{source}", str(source / unit), *WP, "-wp-par", str(jobs),
+               "-wp-report-json", str(report)]
+        if cache is not None:
+            cache.mkdir(parents=True, exist_ok=True)
+            cmd += ["-wp-cache", "update", "-wp-cache-dir", str(cache)]
+        t0 = time.monotonic()
+        proc = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp, start_new_session=True,
+                              env={**os.environ, "WHY3CONFIG": str(why3_config())})
+        out.seconds = time.monotonic() - t0
+        log = proc.stdout + proc.stderr
+        if proc.returncode != 0 or not report.is_file():
+            errors = [line for line in log.splitlines() if "error" in line.lower()] or log.strip().splitlines()[-3:]
+            out.problem = "Frama-C stopped: " + " | ".join(errors[:3])
+            return out
+        functions = dict(json.loads(report.read_text())).get("wp:functions", {})
+    for fn, props in functions.items():
+        goals = proved = 0
+        for prop, by in props.items():
+            if prop == "wp:section":   # the function's own total of the properties below
+                continue
+            main = by.get("wp:main", {})
+            goals += main.get("total", 0)
+            proved += main.get("valid", 0)
+            if main.get("valid", 0) < main.get("total", 0):
+                out.unproved.append(prop)
+        out.functions[fn] = (goals, proved)
+        out.goals += goals
+        out.proved += proved
+    out.assumed = {fn: " ".join(req.split()) for fn, req in HYPOTHESES.findall(log)}
+    if not out.goals:
+        out.problem = "WP made no goal (no function, or none with a contract)"
+    return out
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("units", nargs="*", metavar="UNIT", help=f"units to prove (default all: {', '.join(UNITS)})")
+    ap.add_argument("--source", type=Path, default=SOURCE, help="the generated C library (default generated/c)")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="goals proved at once (default: cores)")
+    ap.add_argument("--no-cache", action="store_true", help="ask the provers about every goal again")
+    ap.add_argument("--json", action="store_true", help="one JSON object per unit instead of the table")
+    ap.add_argument("-v", "--verbose", action="store_true", help="goals per function")
+    args = ap.parse_args(argv)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    units = args.units or list(UNITS)
+    unknown = [u for u in units if not (args.source / u).is_file()]
+    if unknown:
+        print(f"prove: no such unit in {args.source}: {', '.join(unknown)}", file=sys.stderr)
+        return 2
+    missing = [tool for tool in ("frama-c", "why3", "z3", "cvc4") if shutil.which(tool) is None]
+    if missing:
+        print(f"prove: {', '.join(missing)} not installed; `make setup` installs them (tools/apt-packages.sh)",
+              file=sys.stderr)
+        return 2
+    cache = None if args.no_cache else CACHE / "wp"
+    failed = broken = False
+    try:
+        if not args.json:
+            print(f"{'unit':16} {'goals':>6} {'proved':>7} {'seconds':>8}")
+        for name in units:
+            u = prove(name, args.source, max(1, args.jobs), cache)
+            broken |= bool(u.problem)
+            failed |= u.proved < u.goals
+            if args.json:
+                print(json.dumps(u.__dict__, sort_keys=True))
+                continue
+            print(f"{u.name:16} {u.goals:>6} {u.proved:>7} {u.seconds:>8.1f}"
+                  + (f"  {u.problem}" if u.problem else "  PROVED" if u.proved == u.goals else "  NOT PROVED"))
+            for prop in u.unproved:
+                print(f"    not proved: {prop}")
+            if args.verbose:
+                for fn, (goals, proved) in u.functions.items():
+                    print(f"    {fn:40} {goals:>4} {proved:>4}")
+            for fn, req in u.assumed.items():
+                print(f"    assumed by WP for {fn}: {req}")
+    except KeyboardInterrupt:
+        print("prove: interrupted", file=sys.stderr)
+        return 130
+    if broken:
+        return 2
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
