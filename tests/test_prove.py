@@ -52,7 +52,9 @@ def test_a_planted_bounds_bug_fails_the_proof(bug: str, tmp_path: Path) -> None:
     text = (copy / unit).read_text()
     assert text.count(good) >= 1, f"{unit} no longer has {good!r}: update the planted bug"
     (copy / unit).write_text(text.replace(good, bad, 1))
-    proc = prove("--source", str(copy), "--no-cache", unit)
+    # the goal a bug breaks cannot be proved, so it would use the whole timeout of each prover: every goal of
+    # these units is proved in well under a second, 2 s is ample
+    proc = prove("--source", str(copy), "--no-cache", "--timeout", "2", unit)
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "NOT PROVED" in proc.stdout and f"not proved: {goal}" in proc.stdout, proc.stdout
 

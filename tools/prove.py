@@ -43,7 +43,7 @@ CACHE = ROOT / ".cache" / "prove"
 UNITS = ("osdk_crc.c", "osdk_acks.c")
 
 TIMEOUT_S = 10          # per goal and prover
-WP = ["-wp", "-wp-rte", "-warn-invalid-pointer", "-wp-prover", "z3,cvc4", "-wp-timeout", str(TIMEOUT_S)]
+WP = ["-wp", "-wp-rte", "-warn-invalid-pointer", "-wp-prover", "z3,cvc4"]
 HYPOTHESES = re.compile(r"Memory model hypotheses for function '([^']+)':\s*/\*@\s*behavior wp_typed:\s*"
                         r"requires (.*?);\s*\*/", re.S)
 
@@ -73,11 +73,11 @@ def why3_config() -> Path:
     return conf
 
 
-def prove(unit: str, source: Path, jobs: int, cache: Path | None) -> Unit:
+def prove(unit: str, source: Path, jobs: int, cache: Path | None, timeout: int = TIMEOUT_S) -> Unit:
     out = Unit(unit)
     with tempfile.TemporaryDirectory(prefix="osdk-prove-") as tmp:
         report = Path(tmp) / "report.json"
-        cmd = ["frama-c", f"-cpp-extra-args=-I{source}", str(source / unit), *WP, "-wp-par", str(jobs),
+        cmd = ["frama-c", f"-cpp-extra-args=-I{source}", str(source / unit), *WP, "-wp-timeout", str(timeout), "-wp-par", str(jobs),
                "-wp-report-json", str(report)]
         if cache is not None:
             cache.mkdir(parents=True, exist_ok=True)
@@ -117,6 +117,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--source", type=Path, default=SOURCE, help="the generated C library (default generated/c)")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="goals proved at once (default: cores)")
     ap.add_argument("--no-cache", action="store_true", help="ask the provers about every goal again")
+    ap.add_argument("--timeout", type=int, default=TIMEOUT_S, metavar="S",
+                    help=f"seconds each prover gets for a goal (default {TIMEOUT_S}); a goal not proved in time "
+                         "is not proved")
     ap.add_argument("--json", action="store_true", help="one JSON object per unit instead of the table")
     ap.add_argument("-v", "--verbose", action="store_true", help="goals per function")
     args = ap.parse_args(argv)
@@ -137,7 +140,7 @@ def main(argv: list[str] | None = None) -> int:
         if not args.json:
             print(f"{'unit':16} {'goals':>6} {'proved':>7} {'seconds':>8}")
         for name in units:
-            u = prove(name, args.source, max(1, args.jobs), cache)
+            u = prove(name, args.source, max(1, args.jobs), cache, max(1, args.timeout))
             broken |= bool(u.problem)
             failed |= u.proved < u.goals
             if args.json:
