@@ -4,8 +4,10 @@ that carry contracts, and a bounds bug planted in a copy fails the proof
 from __future__ import annotations
 
 import shutil
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -66,3 +68,25 @@ def test_a_planted_bounds_bug_fails_the_proof(bug: str, tmp_path: Path) -> None:
 def test_bad_arguments_are_one_line_and_exit_2(args, says) -> None:
     proc = prove(*args)
     assert proc.returncode == 2 and says in proc.stderr and "Traceback" not in proc.stderr, proc.stderr
+
+
+@pytest.mark.parametrize("sig, status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_a_signal_stops_the_proof_and_every_prover_within_2_s(sig, status) -> None:
+    if shutil.which("frama-c") is None:
+        pytest.fail("frama-c is not installed; `make setup` installs it (tools/apt-packages.sh)")
+    proc = subprocess.Popen([*PROVE, "--no-cache"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            cwd=ROOT)
+    time.sleep(2.5)   # Frama-C is running (a cold proof takes about 10 s), in a session of its own
+    sessions = subprocess.run(["pgrep", "-P", str(proc.pid)], capture_output=True, text=True).stdout.split()
+    assert sessions, "Frama-C was not running"
+    t0 = time.monotonic()
+    proc.send_signal(sig)
+    out, err = proc.communicate(timeout=10)
+    took = time.monotonic() - t0
+    assert proc.returncode == status and took < 2, (proc.returncode, took, err)
+    assert f"stopped by {sig.name}" in err and "Traceback" not in err, err
+    time.sleep(0.5)   # the provers, killed with Frama-C's session, are reaped by init
+    left = [line for line in subprocess.run(["ps", "-e", "-o", "sid=,stat=,comm="], capture_output=True,
+                                            text=True).stdout.splitlines()
+            if line.split()[0] in sessions and not line.split()[1].startswith("Z")]
+    assert left == [], left

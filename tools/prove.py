@@ -60,6 +60,16 @@ class Unit:
     problem: str = ""                                                      # Frama-C did not run through
 
 
+class Stopped(Exception):
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum, self.name = signum, signal.Signals(signum).name
+
+
+def _stopped(signum: int, frame) -> None:
+    raise Stopped(signum)
+
+
 def why3_config() -> Path:
     """WP reaches z3 and cvc4 through Why3, which finds them only in its
     configuration: one of our own, detected once, not the user's ~/.why3.conf."""
@@ -83,10 +93,16 @@ def prove(unit: str, source: Path, jobs: int, cache: Path | None, timeout: int =
             cache.mkdir(parents=True, exist_ok=True)
             cmd += ["-wp-cache", "update", "-wp-cache-dir", str(cache)]
         t0 = time.monotonic()
-        proc = subprocess.run(cmd, capture_output=True, text=True, cwd=tmp, start_new_session=True,
-                              env={**os.environ, "WHY3CONFIG": str(why3_config())})
+        # its own session, so that a stop ends Frama-C and every prover it started, not Frama-C alone
+        proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp,
+                                start_new_session=True, env={**os.environ, "WHY3CONFIG": str(why3_config())})
+        try:
+            log = proc.communicate()[0]
+        finally:
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGKILL)
+                proc.wait()
         out.seconds = time.monotonic() - t0
-        log = proc.stdout + proc.stderr
         if proc.returncode != 0 or not report.is_file():
             errors = [line for line in log.splitlines() if "error" in line.lower()] or log.strip().splitlines()[-3:]
             out.problem = "Frama-C stopped: " + " | ".join(errors[:3])
@@ -123,7 +139,8 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--json", action="store_true", help="one JSON object per unit instead of the table")
     ap.add_argument("-v", "--verbose", action="store_true", help="goals per function")
     args = ap.parse_args(argv)
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    for sig in (signal.SIGINT, signal.SIGTERM):   # also where the caller left SIGINT ignored (a background job)
+        signal.signal(sig, _stopped)
     units = args.units or list(UNITS)
     unknown = [u for u in units if not (args.source / u).is_file()]
     if unknown:
@@ -155,9 +172,9 @@ def main(argv: list[str] | None = None) -> int:
                     print(f"    {fn:40} {goals:>4} {proved:>4}")
             for fn, req in u.assumed.items():
                 print(f"    assumed by WP for {fn}: {req}")
-    except KeyboardInterrupt:
-        print("prove: interrupted", file=sys.stderr)
-        return 130
+    except Stopped as e:
+        print(f"prove: stopped by {e.name}; the units above were proved, the rest not", file=sys.stderr)
+        return 128 + e.signum
     if broken:
         return 2
     return 1 if failed else 0
