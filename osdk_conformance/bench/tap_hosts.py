@@ -20,6 +20,7 @@ from osdk_conformance._construct.payload import osdk_payload
 from osdk_conformance.bench.reliability import BusyLoops
 from osdk_conformance.bench.stand_in import SIM_NICE, favour
 from osdk_conformance.core.wire import encode
+from osdk_conformance.core.stats import percentile
 from osdk_conformance.reference.values import broadcast_data, items
 from osdk_conformance.sim.host_bugs import BUGS
 
@@ -156,8 +157,7 @@ def measure_latency(probes: int = LATENCY_PROBES, profile: str = "m100-fw3.1") -
             os.close(fd)
 
     def ms(v: list[float], p: float) -> float:
-        v = sorted(v)
-        return round(1000 * v[min(len(v) - 1, int(p / 100 * len(v)))], 3)
+        return round(1000 * percentile(v, p), 3)
 
     return {"frame_bytes": len(frame), "probes": probes,
             **{way: {"p50_ms": ms(v, 50), "p99_ms": ms(v, 99), "max_ms": ms(v, 100)} for way, v in out.items()}}

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from osdk_conformance.core.rules import profile as load_profile
-from osdk_conformance.device.analysis import percentile
+from osdk_conformance.core.stats import percentile
 from osdk_conformance.device.hostload import HostLoad
 from osdk_conformance.device.port import LinkState
 from osdk_conformance.harness.report import FAIL, PASS, SKIP, Result

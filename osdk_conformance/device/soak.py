@@ -25,7 +25,8 @@ from pathlib import Path
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import baud_rate, positive_float, positive_int
 from osdk_conformance.core.rules import profile as load_profile
-from osdk_conformance.device.analysis import Analyzer, percentile
+from osdk_conformance.core.stats import percentile
+from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.port import Port
 from osdk_conformance.sim.simulator import spawned, stop_child
 

@@ -9,7 +9,8 @@ import math
 from dataclasses import dataclass, field, replace
 
 from osdk_conformance.core.rules import default_rules
-from osdk_conformance.device.analysis import Finding, percentile
+from osdk_conformance.core.stats import percentile
+from osdk_conformance.device.analysis import Finding
 from osdk_conformance.device.hostload import HOST_TOO_BUSY
 from osdk_conformance.device.checks import (Options as DeviceOptions, decode_checks, link_checks, stream_checks,
                                              value_checks)

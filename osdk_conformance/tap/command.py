@@ -31,7 +31,8 @@ from osdk_conformance.core.errors import EXIT_INCONCLUSIVE, UsageError, cannot_r
 from osdk_conformance.core.options import baud_rate, non_negative_float, positive_float, positive_int
 from osdk_conformance.core.wire import key_option
 from osdk_conformance.device.acceptance import expect_rates, print_results
-from osdk_conformance.device.analysis import Analyzer, percentile
+from osdk_conformance.core.stats import percentile
+from osdk_conformance.device.analysis import Analyzer
 from osdk_conformance.device.checks import Options
 from osdk_conformance.device.hostload import HOST_TOO_BUSY, HostClock, withheld
 from osdk_conformance.device.plots import checks_html, plots_html
