@@ -29,10 +29,11 @@ Sections (`--only`, default all, in this order):
 - doctor (only when named in --only: about ten minutes at 20 runs): seeded
   diagnoses of `osdkc doctor` against each link fault it must tell apart;
   each must name that fault and no other (doctor_faults.py, docs/DOCTOR.md).
-- tap (only when named in --only: about 15 minutes at 20 runs): seeded
-  sessions of `osdkc host` through `osdkc tap` beside busy loops: a healthy
-  host must pass, each planted host bug must fail the one check it names
-  (tap_hosts.py, docs/TAP.md).
+- tap (only when named in --only: about 22 minutes at 20 runs): seeded
+  sessions of `osdkc host` through `osdkc tap` beside busy loops, relaying
+  and (five of the hosts) passive on a Y-cable: a healthy host must pass,
+  each planted host bug must fail the one check it names (tap_hosts.py,
+  docs/TAP.md).
 
 Nothing here asserts a speed: the numbers are printed, written as JSON
 (--json) and as the Markdown block of docs/PERFORMANCE.md (--markdown), with
@@ -231,8 +232,8 @@ def run_bench(args: argparse.Namespace) -> int:
         result["doctor"] = bench_doctor.measure(args.doctor_runs, _log)
         result["doctor"]["command"] = command_line(args)
     if "tap" in sections:
-        _log(f"tap: {args.tap_runs} seeded sessions of each of {len(bench_tap.CASES)} hosts, "
-             f"{args.busy_per_core} busy loops per core")
+        _log(f"tap: {args.tap_runs} seeded sessions of each of {len(bench_tap.CASES)} hosts relayed and "
+             f"{len(bench_tap.PASSIVE_CASES)} passive, {args.busy_per_core} busy loops per core")
         result["tap"] = bench_tap.measure(args.tap_runs, _log, args.busy_per_core)
         result["tap"]["command"] = command_line(args)
     if "footprint" in sections:

@@ -17,6 +17,7 @@ import tty
 from pathlib import Path
 
 from osdk_conformance._construct.payload import osdk_payload
+from osdk_conformance.bench import ycable
 from osdk_conformance.bench.reliability import BusyLoops
 from osdk_conformance.bench.stand_in import SIM_NICE, favour
 from osdk_conformance.core.wire import encode
@@ -29,6 +30,9 @@ KEY_ENV = "OSDK_TAP_BENCH_KEY"
 APP_ID = 1234567
 RELEASE_WAIT_S = 2.5   # a host that ends holding control must be silent this long before the tap stops (its grace: 2 s)
 CASES = ("healthy", *BUGS)
+# Through a Y-cable too: the hosts whose verdict hangs on the order of the two lines (an ACK and the
+# command around it) or on their timing
+PASSIVE_CASES = ("healthy", "no-control", "wrong-session", "retry-storm", "slow-cadence")
 BAUD = 921600   # the fastest rate the profiles use: where a relay's added delay matters most
 
 
@@ -56,25 +60,38 @@ def _stop(proc: subprocess.Popen, sig: int, timeout: float = 10.0) -> int:
 
 
 def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", seconds: float = 1.5,
-                baud: int = BAUD) -> dict:
+                baud: int = BAUD, passive: bool = False) -> dict:
     """One session of `case` ("healthy" or a bug name): the host's exit
-    status, the tap's, its summary JSON and where its capture is."""
+    status, the tap's, its summary JSON and where its capture is. The tap
+    relays between the host and the simulator, or (`passive`) listens to the
+    two lines of a Y-cable between them (bench/ycable.py)."""
     env = {**os.environ, KEY_ENV: KEY}
     work.mkdir(parents=True, exist_ok=True)
     sim = subprocess.Popen(_cli("sim", "--profile", profile, "--app-id", str(APP_ID), "--key-env", KEY_ENV,
                                 "--seed", str(seed), "--baud", str(baud)),
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-    tap = host = None
+    tap = host = cable = None
+    lost: dict = {}
     try:
         favoured = favour(sim.pid)   # it stands in for a flight controller, which has a CPU of its own
         fc = _first_line(sim, "osdkc sim")
         summary, capture = work / "tap.json", work / "tap.pcapng"
-        tap = subprocess.Popen(_cli("tap", "--fc", fc, "--profile", profile, "--baud", str(baud), "-q",
+        if passive:
+            cable, ports = ycable.spawn(fc, baud)
+            where = ["--listen-host-tx", ports["host_tx"], "--listen-fc-tx", ports["fc_tx"]]
+        else:
+            where = ["--fc", fc]
+        tap = subprocess.Popen(_cli("tap", *where, "--profile", profile, "--baud", str(baud), "-q",
                                     "--capture", str(capture),
                                     "--summary-json", str(summary), "--html", str(work / "tap.html"),
                                     "--junit", str(work / "tap.xml")),
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
-        port = _first_line(tap, "osdkc tap")
+        if passive:   # its first words on stderr come as it starts to listen
+            if not tap.stderr.readline():
+                raise RuntimeError(f"osdkc tap did not start: {tap.communicate()[0].strip()}")
+            port = ports["host"]
+        else:
+            port = _first_line(tap, "osdkc tap")
         bugs = [] if case == "healthy" else ["--bug", case]
         t0 = time.monotonic()
         host = subprocess.Popen(_cli("host", "--port", port, "--profile", profile, "--baud", str(baud),
@@ -91,10 +108,14 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
         for p in (host, tap, sim):
             if p is not None and p.poll() is None:
                 _stop(p, 15)
-    result = {"case": case, "seed": seed, "host_status": host.returncode, "host_stderr": host_err[-2000:],
-              "favoured": favoured,
+        if cable is not None:
+            lost = ycable.stop(cable)
+    result = {"case": case, "seed": seed, "mode": "passive" if passive else "relay",
+              "host_status": host.returncode, "host_stderr": host_err[-2000:], "favoured": favoured,
               "host_s": round(host_s, 2), "tap_status": tap_status, "tap_stdout": out[-4000:],
               "tap_stderr": err[-2000:], "capture": str(capture)}
+    if passive:   # bytes the Y-cable's line between host and FC lost: the stand-in fell behind, not the pair
+        result["cable lost bytes"] = lost
     try:
         result["summary"] = json.loads(summary.read_text())
     except (OSError, ValueError) as e:
@@ -103,12 +124,6 @@ def run_session(case: str, seed: int, work: Path, profile: str = "m100-fw3.1", s
 
 
 LATENCY_PROBES = 2000
-
-
-def _pty() -> tuple[int, int, str]:
-    master, slave = os.openpty()
-    tty.setraw(slave)
-    return master, slave, os.ttyname(slave)
 
 
 def _through(write_fd: int, read_fd: int, frame: bytes) -> float:
@@ -133,8 +148,8 @@ def measure_latency(probes: int = LATENCY_PROBES, profile: str = "m100-fw3.1") -
     data = broadcast_data(profile, list(items(profile)), {})
     frame = encode(cmd_set=0x02, cmd_id=0x00, value=osdk_payload(0x02, 0x00, False, profile).build(
         {"body": {"data": data}}))
-    fc_m, fc_s, fc_path = _pty()
-    direct_m, direct_s, _ = _pty()
+    fc_m, fc_s, fc_path = ycable.raw_pty()
+    direct_m, direct_s, _ = ycable.raw_pty()
     tap = subprocess.Popen(_cli("tap", "--fc", fc_path, "--profile", profile, "--baud", str(BAUD), "--no-capture",
                                 "-q"), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     host = -1
@@ -177,8 +192,10 @@ def judged_right(case: str, result: dict) -> bool:
     return failed == ([] if case == "healthy" else [BUGS[case][1]])
 
 
-def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CASES) -> dict:
-    """`runs` seeded sessions of each case, one at a time, beside busy loops."""
+def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CASES,
+            passive_cases: tuple[str, ...] = PASSIVE_CASES) -> dict:
+    """`runs` seeded sessions of each case through a relaying tap, and of
+    each passive case through a Y-cable, one at a time, beside busy loops."""
     out: dict = {"runs": runs, "baud": BAUD, "cases": {}, "latency": {"idle": measure_latency()}}
     log(f"tap: latency idle: {out['latency']['idle']}")
     delays: dict[str, list[float]] = {}   # direction -> each session's p99 of the tap's forwarding delay, ms
@@ -186,24 +203,29 @@ def measure(runs: int, log, busy_per_core: int = 2, cases: tuple[str, ...] = CAS
     with BusyLoops(busy_per_core) as busy, tempfile.TemporaryDirectory(prefix="osdkc-tap-bench-") as tmp:
         out["latency"]["saturated"] = measure_latency()
         log(f"tap: latency saturated: {out['latency']['saturated']}")
-        for case in cases if runs else ():
+        sessions = [(case, False) for case in cases] + [(case, True) for case in passive_cases]
+        for case, passive in sessions if runs else ():
             right, wrong = 0, []
             for seed in range(1, runs + 1):
-                r = run_session(case, seed, Path(tmp) / f"{case}-{seed}")
+                r = run_session(case, seed, Path(tmp) / f"{case}-{seed}{'-passive' if passive else ''}",
+                                passive=passive)
                 if judged_right(case, r):
                     right += 1
                 else:
                     wrong.append({"seed": seed, "host": r["host_status"], "tap": r["tap_status"],
                                   "failed": failed_checks(r["summary"]),
                                   "host_said": r["host_stderr"].strip().splitlines()[-1:],
-                                  "tap_said": r["tap_stderr"].strip().splitlines()[-2:]})
+                                  "tap_said": r["tap_stderr"].strip().splitlines()[-2:],
+                                  **({"cable lost bytes": r["cable lost bytes"]} if passive else {})})
                 favoured_all = favoured_all and r["favoured"]
                 for name, m in r["summary"].get("meta", {}).items():
                     if name.endswith("forwarding delay p99 (ms)"):
                         delays.setdefault(name.split(" forwarding")[0], []).append(m)
-            out["cases"][case] = {"caught_by": "nothing fails" if case == "healthy" else BUGS[case][1],
-                                  "right": right, "wrong": wrong}
-            log(f"tap: {case}: {right}/{runs} right")
+            mode = "passive" if passive else "relay"
+            out["cases"][f"{case} ({mode})" if passive else case] = {
+                "mode": mode, "host": case, "caught_by": "nothing fails" if case == "healthy" else BUGS[case][1],
+                "right": right, "wrong": wrong}
+            log(f"tap: {case} ({mode}): {right}/{runs} right")
         try:
             load = os.getloadavg()[0]
         except OSError:
@@ -224,10 +246,10 @@ def markdown(result: dict) -> str:
                 f"{load['load_average_1min_at_end']} at the end; the simulator and the host, which stand in for "
                 f"machines of their own, at nice {load['simulator_and_host_nice']}, the tap at the busy loops' 0), "
                 f"{result['runs']} seeded sessions of each at {result['baud']} baud:", "",
-                "| host | the tap must | runs | right |", "|---|---|---|---|"]
-        for case, c in result["cases"].items():
-            must = "find nothing" if case == "healthy" else f"fail `{c['caught_by']}` and nothing else"
-            rows.append(f"| {case} | {must} | {result['runs']} | {c['right']} |")
+                "| host | tap | the tap must | runs | right |", "|---|---|---|---|---|"]
+        for c in result["cases"].values():
+            must = "find nothing" if c["host"] == "healthy" else f"fail `{c['caught_by']}` and nothing else"
+            rows.append(f"| {c['host']} | {c['mode']} | {must} | {result['runs']} | {c['right']} |")
         rows.append("")
     rows += [f"What the tap adds, end to end: a whole broadcast frame "
              f"({result['latency']['idle']['frame_bytes']} bytes) written into the flight controller's "

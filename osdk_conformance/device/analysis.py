@@ -75,7 +75,11 @@ VALUE_RULES = ("quaternion_norm", "gps_health", "battery", "rc_channels", "fligh
 
 class Analyzer:
     def __init__(self, profile: str, key: bytes | None = None, expect_rates: dict[str, int] | None = None,
-                 flight_status_enum: str | None = None) -> None:
+                 flight_status_enum: str | None = None, ack_reorder_s: float = 0.0) -> None:
+        """`ack_reorder_s`: how much sooner than its command an ACK may be
+        read and still answer it. 0 for one port, where the answer cannot
+        overtake the question; two ports (a Y-cable's two adapters,
+        tap/judge.REORDER_S) deliver each line with its own latency."""
         rules = default_rules()
         self.rules = rules
         self.prof = rules.profile(profile)
@@ -137,6 +141,8 @@ class Analyzer:
         # commands sent and their ACKs
         self.sent: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
         self.acks: dict[tuple[int, int], tuple[float, int, int, bytes]] = {}  # (session, seq) -> t, set, id, value
+        self.ack_reorder_s = ack_reorder_s
+        self._early_acks: dict[tuple[int, int], tuple[float, bytes]] = {}   # ACKs read before any command they answer
         # movement control, sent in session 0 (no ACK) so not in `sent`: one entry per run of commands
         # with one mode byte and kind of setpoint, [first t, mode byte, all setpoints zero, last t]
         self.movement: list[list] = []
@@ -174,6 +180,9 @@ class Analyzer:
                     old = self.sent.get(key)
                     if old is None or old[1:] != new[1:]:   # a retransmission keeps the first send time
                         self.sent[key] = new
+                        early = self._early_acks.pop(key, None)
+                        if early is not None and t - early[0] <= self.ack_reorder_s:
+                            self._acked(key, early[0], new, early[1])
                 if not op.is_ack and not op.problem and (op.cmd_set, op.cmd_id) == (1, 3) and op.value:
                     self._movement(t, op.value)
 
@@ -256,9 +265,10 @@ class Analyzer:
                 key = (op.session, op.seq)
                 sent = self.sent.get(key)
                 if sent:
-                    self.acks[key] = (t, sent[1], sent[2], op.value)
-                    if (sent[1], sent[2]) == (0x00, 0x10):
-                        self._frequency_acked(t, sent[3], op.value, sent[0])
+                    self._acked(key, t, sent, op.value)
+                elif self.ack_reorder_s > 0:   # its command may still be on its way, on the other line
+                    self._early_acks = {k: v for k, v in self._early_acks.items() if t - v[0] <= self.ack_reorder_s}
+                    self._early_acks[key] = (t, op.value)
                 self.ack_cond.notify_all()
             return
         name = {(2, 0): "broadcast", (2, 1): "lost_control"}.get((op.cmd_set, op.cmd_id), "other")
@@ -367,16 +377,25 @@ class Analyzer:
             f["control_info"].add(not bad, lambda: f"t={t:.3f}: " + ", ".join(bad) + " not defined")
             self.latest["control_info"] = (t, ci)
 
+    def _acked(self, key: tuple[int, int], t: float, sent: tuple[float, int, int, bytes], ack: bytes) -> None:
+        self.acks[key] = (t, sent[1], sent[2], ack)
+        if (sent[1], sent[2]) == (0x00, 0x10):
+            self._frequency_acked(t, sent[3], ack, sent[0])
+
     # ---- configuration epochs ------------------------------------------------
 
     def _frequency_acked(self, t: float, request: bytes, ack: bytes, requested: float | None = None) -> None:
         if len(ack) < 2 or int.from_bytes(ack[:2], "little") != 0 or len(request) < 16:
             return
-        rates = dict(self.epochs[-1].rates)
+        # an ACK read before its command is added when the command comes: in order of time all the same
+        at = len(self.epochs)
+        while at > 1 and self.epochs[at - 1].start > t:
+            at -= 1
+        rates = dict(self.epochs[at - 1].rates)
         for item, code in zip(self.prof.flag_bits, request):
             if code in HZ_OF_CODE:
                 rates[item] = HZ_OF_CODE[code]
-        self.epochs.append(Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}", requested))
+        self.epochs.insert(at, Epoch(t, rates, f"set frequency acknowledged at t={t:.3f}", requested))
 
     def epoch_end(self, i: int) -> float:
         """Where epoch i's measurements stop: when the next configuration was

@@ -39,7 +39,7 @@ from osdk_conformance.device.plots import checks_html, plots_html
 from osdk_conformance.device.verdict import acceptance_word, counts
 from osdk_conformance.harness.report import Result, conforms, write_html, write_junit
 from osdk_conformance.tap.checks import TapOptions, tap_results
-from osdk_conformance.tap.judge import HostJudge
+from osdk_conformance.tap.judge import REORDER_S, HostJudge
 from osdk_conformance.tap.plots import host_plots_html
 from osdk_conformance.tap.relay import FC, HOST, Link, PtyEnd, SerialEnd
 from osdk_conformance.tap.replay import judge_capture
@@ -122,8 +122,8 @@ def run_tap(args: argparse.Namespace) -> int:
     opts = _tap_options(args)
     if mode == "replay":
         return _replay(args, opts, key)
-    an = Analyzer(args.profile, key, opts.device.expect_rates)
-    return _live(args, mode, an, HostJudge(an, args.profile), opts)
+    an = Analyzer(args.profile, key, opts.device.expect_rates, ack_reorder_s=REORDER_S)
+    return _live(args, mode, an, HostJudge(an, args.profile, two_lines=(mode == "passive")), opts)
 
 
 # ---- live --------------------------------------------------------------------------
@@ -186,7 +186,7 @@ def _live(args, mode: str, an, judge, opts: TapOptions) -> int:
                 break
         link.close()
         ran_s = time.monotonic() - started
-        an.finish(link.state.t_end)
+        judge.finish(link.state.t_end)
         if cap:
             cap.close()
     finally:

@@ -17,6 +17,7 @@ one command waiting in that session, when the SEQ is the same.
 from __future__ import annotations
 
 import struct
+from collections import deque
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -81,8 +82,18 @@ class Move:
 
 
 class HostJudge:
-    def __init__(self, analyzer, profile: str) -> None:
+    """Judges the host by what the tap read both ways. `two_lines` (a
+    Y-cable: each line through its own adapter) holds the host's bytes back
+    for the analyser's ack_reorder_s before judging them, so that an ACK
+    read up to that much later than the host's next command is judged
+    before it: the FC's line may lag the host's by that much either way,
+    and the order of two frames that close is not known (a relay reads both
+    ends itself and knows it)."""
+
+    def __init__(self, analyzer, profile: str, two_lines: bool = False) -> None:
         self.an, self.profile = analyzer, profile
+        self._hold_s = analyzer.ack_reorder_s if two_lines else 0.0
+        self._held: deque[tuple[float, bytes]] = deque()   # the host's bytes not yet judged
         self.rules = default_rules()
         self._body = payload_body(profile)
         self.frames = 0
@@ -128,13 +139,28 @@ class HostJudge:
         """Bytes from the flight controller."""
         if self.t0 is None:
             self.t0 = t
+        self._release(t)
         self.an.feed_rx(t, data)
 
     def feed_tx(self, t: float, data: bytes) -> None:
         """Bytes from the host."""
         if self.t0 is None:
             self.t0 = t
-        self.an.feed_tx(t, data)
+        if self._hold_s:
+            self._release(t)
+            self._held.append((t, data))
+        else:
+            self.an.feed_tx(t, data)
+
+    def _release(self, now: float) -> None:
+        while self._held and self._held[0][0] + self._hold_s <= now:
+            self.an.feed_tx(*self._held.popleft())
+
+    def finish(self, t: float | None = None) -> None:
+        """The end of the input: the host's bytes still held back are judged, then the analyser finishes."""
+        while self._held:
+            self.an.feed_tx(*self._held.popleft())
+        self.an.finish(t)
 
     def at(self, t: float) -> str:
         """A time as the reports write it: seconds from the first byte the tap read, either way."""
@@ -220,18 +246,24 @@ class HostJudge:
                        f"control authority {what} asked for (seq {op.seq}) before an activation succeeded")
 
     def _early_answer(self, cmd: Command) -> None:
-        """An ACK read up to REORDER_S before its command answers it: two
-        adapters of a Y-cable deliver their lines with latencies of their
-        own, so the FC's answer can reach the tap first."""
+        """An ACK read up to the analyser's ack_reorder_s (REORDER_S for a
+        tap) before its command answers it: two adapters of a Y-cable deliver
+        their lines with latencies of their own, so the FC's answer can reach
+        the tap first."""
         early = self.early.get(cmd.session, [])
         for t, op in list(early):
-            if cmd.t - t > REORDER_S:
+            if cmd.t - t > self.an.ack_reorder_s:
                 early.remove((t, op))
                 self._keep(self.stray_acks, t, f"ACK in session {op.session} seq {op.seq} answers no command "
                                                "of the host's")
             elif op.seq == cmd.seq:
                 early.remove((t, op))
                 self._answer(cmd, t, op)
+                # more ACKs of this SEQ read as early: the FC answered retransmissions still held back
+                again = [(t2, op2) for t2, op2 in early if op2.seq == cmd.seq]
+                for e in again:
+                    early.remove(e)
+                self.repeated_acks += len(again)
                 return
 
     def settle(self) -> None:
