@@ -102,10 +102,11 @@ memory: setup
 	OSDK_MEMORY_CAMPAIGN=1 $(BIN)/pytest -q -n $(JOBS) tests/test_bounded_memory.py
 
 # The proof (docs/VERIFICATION.md): Frama-C WP proves the units of the
-# generated C library that carry contracts free of runtime errors; prover
-# answers are cached per goal in .cache/prove/. Fails on any unproved goal.
+# generated C library that carry contracts free of runtime errors (prover
+# answers cached per goal in .cache/prove/), then checks that each planted
+# bounds bug fails the proof. Fails on any unproved goal or uncaught bug.
 prove: setup
-	$(BIN)/python tools/prove.py
+	$(BIN)/python tools/prove.py --mutants
 
 # Benchmarks (docs/PERFORMANCE.md): every section, the full corpora; rewrites
 # the results block of docs/PERFORMANCE.md. Takes tens of minutes.

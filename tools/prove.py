@@ -16,8 +16,13 @@ that changed. Per unit it prints goals, proved, time, and what WP assumed
 about memory (its "memory model hypotheses": that two regions do not
 overlap); docs/VERIFICATION.md says what the proof covers and what not.
 
-Exit status: 0 every goal proved, 1 a goal not proved, 2 Frama-C missing,
-a unit that does not parse, or bad arguments.
+`--mutants` then plants bounds bugs (MUTANTS), each in a copy of the
+library, and checks that the proof of the function fails on the goal the
+bug breaks: `make prove` runs them all.
+
+Exit status: 0 every goal proved (and every mutant caught), 1 a goal not
+proved or a mutant not caught, 2 Frama-C missing, a unit that does not
+parse, or bad arguments.
 """
 from __future__ import annotations
 
@@ -38,10 +43,67 @@ ROOT = Path(__file__).resolve().parent.parent
 SOURCE = ROOT / "generated" / "c"
 CACHE = ROOT / ".cache" / "prove"
 
-# What is proved today: the units whose every function has a contract. The
-# decoder, the deframer and the encoders follow (issue 29, docs/VERIFICATION.md).
-UNITS = ("osdk_crc.c", "osdk_acks.c")
+# What is proved today (docs/VERIFICATION.md), unit -> which of its functions:
+# None for every one, or the names (regular expressions) to prove, or to leave
+# out, of the functions the unit defines.
+UNITS: dict[str, dict | None] = {
+    "osdk_crc.c": None,
+    "osdk_acks.c": None,
+    "osdk_encode.c": None,
+    # the receiver's header reads and checks, which the deframer relies on; the
+    # decoder's parse functions are not proved yet
+    "osdk_decoder.c": {"only": [r"osdk_peek_bits_le", r"osdk_frame_peek_\w+", r"osdk_frame_valid_\w+"],
+                       "also": ["osdk_kdiv", "osdk_kmod"]},   # the header's inline helpers
+    # all but the three that call the user's callback: WP cannot follow a call
+    # through a function pointer it does not know, and they touch no buffer
+    "osdk_deframer.c": {"except": [r"scan", r"osdk_deframer_feed", r"osdk_deframer_finish"]},
+}
+# A function definition as the generators write it: the name, then `{` on the next line.
+DEFINITION = re.compile(r"^(?:static\s+)?(?:inline\s+)?[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\([^;{]*\)\s*\n\{", re.M)
 
+
+def left_out(unit: str, source: Path) -> list[str]:
+    """The functions `unit` defines that are not proved."""
+    chosen = selected(unit, source)
+    if chosen is None:
+        return []
+    return [f for f in DEFINITION.findall((source / unit).read_text(encoding="utf-8")) if f not in chosen]
+
+
+def selected(unit: str, source: Path) -> list[str] | None:
+    """The functions of `unit` to prove (None: all of them)."""
+    rule = UNITS.get(unit)
+    if rule is None:
+        return None
+    defined = DEFINITION.findall((source / unit).read_text(encoding="utf-8"))
+    if "only" in rule:
+        return [f for f in defined if any(re.fullmatch(r, f) for r in rule["only"])] + rule.get("also", [])
+    return [f for f in defined if not any(re.fullmatch(r, f) for r in rule["except"])]
+
+# Planted bugs, each in a copy of the library: the proof of the function must
+# then fail, on the goal named (a proof that cannot fail shows nothing).
+# name -> (unit, function, the line as generated, the line with the bug, the goal WP can no longer prove)
+MUTANTS = {
+    "crc-reads-one-past-the-end": ("osdk_crc.c", "osdk_crc16", "for (i = 0; i < len; i++) {",
+                                   "for (i = 0; i <= len; i++) {", "osdk_crc16_assert_rte_mem_access"),
+    "acks-session-check-missing": ("osdk_acks.c", "osdk_acks_command",
+                                   "if (session < OSDK_ACK_FIRST_SESSION || session >= OSDK_ACK_SESSIONS) return;",
+                                   "if (session < OSDK_ACK_FIRST_SESSION) return;",
+                                   "osdk_acks_command_assert_rte_pointer_value"),
+    "encode-copies-one-byte-too-many": ("osdk_encode.c", "osdk_encode_frame",
+                                        "for (i = 0; i < len; i++) out[at++] = value[i];",
+                                        "for (i = 0; i <= len; i++) out[at++] = value[i];",
+                                        "osdk_encode_frame_assert_rte_mem_access"),
+    "encode-room-check-one-short": ("osdk_encode.c", "osdk_encode_frame",
+                                    "if (out == NULL || cap < frame_len) return OSDK_ENCODE_BUFFER_TOO_SMALL;",
+                                    "if (out == NULL || cap + 1u < frame_len) return OSDK_ENCODE_BUFFER_TOO_SMALL;",
+                                    "osdk_encode_frame_assert_rte_mem_access"),
+    "deframer-window-overrun": ("osdk_deframer.c", "take", "k = len < space ? len : space;",
+                                "k = len < space ? len : space + 1u;", "take_assert_rte_mem_access"),
+}
+# A planted bug's goal cannot be proved, so it uses each prover's whole timeout: every goal of the
+# proved units takes well under a second, 1 s is ample
+MUTANT_TIMEOUT_S = 1
 TIMEOUT_S = 10          # per goal and prover
 WP = ["-wp", "-wp-rte", "-warn-invalid-pointer", "-wp-prover", "z3,cvc4"]
 HYPOTHESES = re.compile(r"Memory model hypotheses for function '([^']+)':\s*/\*@\s*behavior wp_typed:\s*"
@@ -83,12 +145,15 @@ def why3_config() -> Path:
     return conf
 
 
-def prove(unit: str, source: Path, jobs: int, cache: Path | None, timeout: int = TIMEOUT_S) -> Unit:
+def prove(unit: str, source: Path, jobs: int, cache: Path | None, timeout: int = TIMEOUT_S,
+          functions: list[str] | None = None) -> Unit:
     out = Unit(unit)
     with tempfile.TemporaryDirectory(prefix="osdk-prove-") as tmp:
         report = Path(tmp) / "report.json"
         cmd = ["frama-c", f"-cpp-extra-args=-I{source}", str(source / unit), *WP, "-wp-timeout", str(timeout), "-wp-par", str(jobs),
                "-wp-report-json", str(report)]
+        if functions:
+            cmd += ["-wp-fct", ",".join(functions)]
         if cache is not None:
             cache.mkdir(parents=True, exist_ok=True)
             cmd += ["-wp-cache", "update", "-wp-cache-dir", str(cache)]
@@ -127,6 +192,26 @@ def prove(unit: str, source: Path, jobs: int, cache: Path | None, timeout: int =
     return out
 
 
+def check_mutant(name: str, source: Path, jobs: int) -> tuple[bool, str]:
+    """Plant mutant `name` in a copy of `source` and prove its function:
+    (the proof failed on the goal it must, what happened)."""
+    unit, fn, good, bad, goal = MUTANTS[name]
+    text = (source / unit).read_text(encoding="utf-8")
+    if good not in text:   # the first occurrence is in `fn`
+        return False, f"{unit} no longer has {good!r}: update the mutant"
+    with tempfile.TemporaryDirectory(prefix="osdk-mutant-") as tmp:
+        copy = Path(tmp) / "c"
+        shutil.copytree(source, copy)
+        (copy / unit).write_text(text.replace(good, bad, 1), encoding="utf-8")
+        u = prove(unit, copy, jobs, None, MUTANT_TIMEOUT_S, [fn])
+    if u.problem:
+        return False, u.problem
+    hit = [p for p in u.unproved if p.startswith(goal)]
+    if not hit:
+        return False, f"the proof did not fail on {goal} (not proved: {', '.join(u.unproved) or 'nothing'})"
+    return True, f"{u.goals - u.proved} of {u.goals} goals of {fn} not proved, {hit[0]} among them ({u.seconds:.1f} s)"
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("units", nargs="*", metavar="UNIT", help=f"units to prove (default all: {', '.join(UNITS)})")
@@ -136,12 +221,19 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--timeout", type=int, default=TIMEOUT_S, metavar="S",
                     help=f"seconds each prover gets for a goal (default {TIMEOUT_S}); a goal not proved in time "
                          "is not proved")
+    ap.add_argument("--function", action="append", metavar="FN",
+                    help="prove only this function of the units (repeatable; the others' contracts are assumed)")
+    ap.add_argument("--mutants", nargs="*", metavar="NAME", choices=list(MUTANTS),
+                    help="after the proof, plant each bug (default all: " + ", ".join(MUTANTS) + ") in a copy "
+                         "and check that the proof fails on it; no unit is proved when only mutants are named "
+                         "and no UNIT is")
     ap.add_argument("--json", action="store_true", help="one JSON object per unit instead of the table")
     ap.add_argument("-v", "--verbose", action="store_true", help="goals per function")
     args = ap.parse_args(argv)
     for sig in (signal.SIGINT, signal.SIGTERM):   # also where the caller left SIGINT ignored (a background job)
         signal.signal(sig, _stopped)
-    units = args.units or list(UNITS)
+    only_mutants = args.mutants is not None and len(args.mutants) > 0 and not args.units
+    units = [] if only_mutants else args.units or list(UNITS)
     unknown = [u for u in units if not (args.source / u).is_file()]
     if unknown:
         print(f"prove: no such unit in {args.source}: {', '.join(unknown)}", file=sys.stderr)
@@ -154,10 +246,11 @@ def main(argv: list[str] | None = None) -> int:
     cache = None if args.no_cache else CACHE / "wp"
     failed = broken = False
     try:
-        if not args.json:
+        if not args.json and units:
             print(f"{'unit':16} {'goals':>6} {'proved':>7} {'seconds':>8}")
         for name in units:
-            u = prove(name, args.source, max(1, args.jobs), cache, max(1, args.timeout))
+            u = prove(name, args.source, max(1, args.jobs), cache, max(1, args.timeout),
+                      args.function or selected(name, args.source))
             broken |= bool(u.problem)
             failed |= u.proved < u.goals
             if args.json:
@@ -167,11 +260,20 @@ def main(argv: list[str] | None = None) -> int:
                   + (f"  {u.problem}" if u.problem else "  PROVED" if u.proved == u.goals else "  NOT PROVED"))
             for prop in u.unproved:
                 print(f"    not proved: {prop}")
+            left = left_out(name, args.source) if not args.function else []
+            if left:
+                print(f"    left out ({len(left)} functions, docs/VERIFICATION.md): "
+                      + (", ".join(left) if len(left) <= 6 else ", ".join(left[:6]) + ", ..."))
             if args.verbose:
                 for fn, (goals, proved) in u.functions.items():
                     print(f"    {fn:40} {goals:>4} {proved:>4}")
             for fn, req in u.assumed.items():
                 print(f"    assumed by WP for {fn}: {req}")
+        if args.mutants is not None:
+            for name in args.mutants or list(MUTANTS):
+                caught, what = check_mutant(name, args.source, max(1, args.jobs))
+                failed |= not caught
+                print(f"mutant {name}: " + ("the proof fails, as it must: " if caught else "NOT CAUGHT: ") + what)
     except Stopped as e:
         print(f"prove: stopped by {e.name}; the units above were proved, the rest not", file=sys.stderr)
         return 128 + e.signum

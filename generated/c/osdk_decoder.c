@@ -156,6 +156,9 @@ uint64_t osdk_peek_bits_le(const uint8_t *buf, unsigned bit_offset, unsigned nbi
 {
     uint64_t v = 0;
     unsigned i;
+    /*@ loop invariant 0 <= i <= nbits;
+        loop assigns i, v;
+        loop variant nbits - i; */
     for (i = 0; i < nbits; i++) {
         unsigned b = bit_offset + i;
         v |= (uint64_t)((buf[b / 8u] >> (b % 8u)) & 1u) << i;

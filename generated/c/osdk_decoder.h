@@ -103,6 +103,10 @@ void osdk_substream_eos(osdk_stream_t *io, osdk_stream_t *sub);
 /* A reader over the same bytes as io, at pos (for `pos` instances). */
 bool osdk_stream_at(const osdk_stream_t *io, uint64_t pos, osdk_stream_t *at);
 int64_t osdk_sign_extend(uint64_t value, unsigned bits);
+/* Bits [bit_offset, bit_offset + nbits) of buf, bit 0 of byte 0 first. */
+/*@ requires nbits <= 64 && bit_offset <= 65536;
+    requires nbits == 0 || \valid_read(buf + (0 .. (bit_offset + nbits - 1) / 8));
+    assigns \nothing; */
 uint64_t osdk_peek_bits_le(const uint8_t *buf, unsigned bit_offset, unsigned nbits);
 osdk_status_t osdk_fail(osdk_error_t *err, osdk_status_t status, const char *type, const char *field,
                         const osdk_stream_t *io);
@@ -758,18 +762,25 @@ typedef struct osdk_frame {
 /* ---- `valid` predicates of value-only checks ----------------------------------------- */
 
 /* `valid` of osdk_broadcast_a3_fw3_1.reserved_flags: 0 */
+/*@ assigns \nothing; */
 bool osdk_broadcast_a3_fw3_1_valid_reserved_flags(int64_t v);
 /* `valid` of osdk_broadcast_m100_fw2_3.reserved_flags: 0 */
+/*@ assigns \nothing; */
 bool osdk_broadcast_m100_fw2_3_valid_reserved_flags(int64_t v);
 /* `valid` of osdk_broadcast_m100_fw3_1.reserved_flags: 0 */
+/*@ assigns \nothing; */
 bool osdk_broadcast_m100_fw3_1_valid_reserved_flags(int64_t v);
 /* `valid` of osdk_frame.len: {'expr': '_ == 12 or _ >= 17'} */
+/*@ assigns \nothing; */
 bool osdk_frame_valid_len(int64_t v);
 /* `valid` of osdk_frame.ver: 0 */
+/*@ assigns \nothing; */
 bool osdk_frame_valid_ver(int64_t v);
 /* `valid` of osdk_frame.res0: 0 */
+/*@ assigns \nothing; */
 bool osdk_frame_valid_res0(int64_t v);
 /* `valid` of osdk_frame.res1: 0 */
+/*@ assigns \nothing; */
 bool osdk_frame_valid_res1(int64_t v);
 
 /* ---- parsing ------------------------------------------------------------------------- */
@@ -833,26 +844,48 @@ osdk_status_t osdk_payload_decode(const uint8_t *buf, size_t len, uint8_t cmd_se
 /* start byte (sof contents) */
 #define OSDK_FRAME_SOF 0xaau
 /* sof: bits 0..7 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_sof(const uint8_t *header);
 /* len: bits 8..17 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_len(const uint8_t *header);
 /* ver: bits 18..23 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_ver(const uint8_t *header);
 /* session: bits 24..28 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_session(const uint8_t *header);
 /* is_ack: bits 29..29 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_is_ack(const uint8_t *header);
 /* res0: bits 30..31 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_res0(const uint8_t *header);
 /* padding: bits 32..36 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_padding(const uint8_t *header);
 /* enc: bits 37..39 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_enc(const uint8_t *header);
 /* res1: bits 40..63 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_res1(const uint8_t *header);
 /* seq: bits 64..79 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_seq(const uint8_t *header);
 /* crc16: bits 80..95 of the header, read without checks. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    assigns \nothing; */
 uint64_t osdk_frame_peek_crc16(const uint8_t *header);
 #define OSDK_FRAME_MAX_LEN 1023u
 

@@ -46,6 +46,9 @@ typedef struct {
     const uint8_t *raw;    /* OSDK_EVENT_FRAME: the frame's bytes; valid during the callback */
 } osdk_event_t;
 
+/* The room for an error event's detail sentence, its terminating NUL included. */
+#define OSDK_DEFRAMER_DETAIL_LEN 160u
+
 typedef void (*osdk_event_fn)(void *user, const osdk_event_t *ev);
 
 typedef struct {
@@ -56,10 +59,27 @@ typedef struct {
     uint64_t base;         /* absolute offset of buf[start] */
     bool in_garbage;
     uint64_t garbage_start;
-    char detail[160];
+    size_t pending;        /* the frame last reported: dropped when the next event is looked for */
+    char detail[OSDK_DEFRAMER_DETAIL_LEN];
 } osdk_deframer_t;
 
+/* The comments that open with an @ are ACSL contracts: what `make prove`
+ * proves the functions against (docs/VERIFICATION.md). A deframer is
+ * usable when its window lies in its buffer and the buffer holds one
+ * maximum-length frame (or it has no buffer: init failed). */
+/*@ predicate osdk_deframer_ok(osdk_deframer_t *d) =
+      \valid(d) &&
+      (d->buf == \null ||
+       (d->cap >= OSDK_DEFRAMER_MIN_BUFFER && d->start + d->fill <= d->cap &&
+        \valid(d->buf + (0 .. d->cap - 1)) && \separated(d, d->buf + (0 .. d->cap - 1))));
+*/
+
 /* buf must hold at least OSDK_DEFRAMER_MIN_BUFFER bytes; false otherwise. */
+/*@ requires \valid(d);
+    requires buf == \null || cap == 0 || \valid(buf + (0 .. cap - 1));
+    requires buf == \null || \separated(d, buf + (0 .. cap - 1));
+    assigns *d;
+    ensures osdk_deframer_ok(d) && d->pending == 0; */
 bool osdk_deframer_init(osdk_deframer_t *d, uint8_t *buf, size_t cap);
 /* Feed any number of bytes; fn is called for every event they complete.
  * fn must not call back into the same deframer. */
@@ -69,12 +89,18 @@ void osdk_deframer_finish(osdk_deframer_t *d, osdk_event_fn fn, void *user);
 
 /* The first thing wrong with a 12-byte header, in the receiver's order,
  * or OSDK_OK. detail (may be NULL) receives a sentence for people. */
+/*@ requires \valid_read(header + (0 .. OSDK_FRAME_HEADER_LEN - 1));
+    requires detail == \null || cap == 0 || \valid(detail + (0 .. cap - 1));
+    assigns detail[0 .. cap - 1]; */
 osdk_status_t osdk_frame_header_problem(const uint8_t *header, char *detail, size_t cap);
 
 /* The checks a receiver makes on bytes handed over as exactly one frame,
  * before its DATA is parsed: start byte (bad_sof), fewer than a header
  * (truncated_frame), the header, byte count against LEN (truncated_frame /
  * length_mismatch) and CRC-32 (bad_crc32). OSDK_OK when all pass. */
+/*@ requires len == 0 || \valid_read(data + (0 .. len - 1));
+    requires detail == \null || cap == 0 || \valid(detail + (0 .. cap - 1));
+    assigns detail[0 .. cap - 1]; */
 osdk_status_t osdk_frame_problem(const uint8_t *data, size_t len, char *detail, size_t cap);
 
 #ifdef __cplusplus

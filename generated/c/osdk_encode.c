@@ -16,14 +16,20 @@ const char *osdk_encode_status_name(osdk_encode_status_t status)
     return "?";
 }
 
+/*@ requires n <= 4 && \valid(p + (0 .. n - 1));
+    assigns p[0 .. n - 1]; */
 static void put_le(uint8_t *p, uint32_t v, unsigned n)
 {
     unsigned i;
+    /*@ loop invariant 0 <= i <= n;
+        loop assigns i, p[0 .. n - 1];
+        loop variant n - i; */
     for (i = 0; i < n; i++) p[i] = (uint8_t)(v >> (8u * i));
 }
 
 /* A float's IEEE bits without memcpy (no libc): C99 allows reading the
  * other member of a union. */
+/*@ assigns \nothing; */
 static uint32_t f32_bits(float v)
 {
     union {
@@ -35,12 +41,20 @@ static uint32_t f32_bits(float v)
 }
 
 /* Sets a header field at its bit position (bit-endian le: bit 0 of byte 0
- * first) in a header whose bytes start at zero. */
+ * first) in a header whose bytes start at zero. The byte and the bit in it
+ * are bit / 8u and bit % 8u, not a shift and a mask: the provers reason
+ * about division, not about bitwise operators. */
+/*@ requires width <= 32 && bit + width <= 8 * OSDK_ENCODE_HEADER_LEN;
+    requires \valid(p + (0 .. OSDK_ENCODE_HEADER_LEN - 1));
+    assigns p[0 .. OSDK_ENCODE_HEADER_LEN - 1]; */
 static void put_bits(uint8_t *p, unsigned bit, unsigned width, uint32_t v)
 {
     unsigned i;
+    /*@ loop invariant 0 <= i <= width && bit == \at(bit, Pre) + i;
+        loop assigns i, bit, p[0 .. OSDK_ENCODE_HEADER_LEN - 1];
+        loop variant width - i; */
     for (i = 0; i < width; i++, bit++) {
-        if ((v >> i) & 1u) p[bit >> 3] = (uint8_t)(p[bit >> 3] | (1u << (bit & 7u)));
+        if ((v >> i) & 1u) p[bit / 8u] = (uint8_t)(p[bit / 8u] | (1u << (bit % 8u)));
     }
 }
 
@@ -56,6 +70,9 @@ size_t osdk_encode_activation(uint32_t app_id, uint32_t api_level, uint32_t sdk_
     put_le(out + 0, app_id, 4);
     put_le(out + 4, api_level, 4);
     put_le(out + 8, sdk_version, 4);
+    /*@ loop invariant 0 <= i <= 32;
+        loop assigns i, out[12 .. 43];
+        loop variant 32 - i; */
     for (i = 0; i < 32; i++) out[12 + i] = bundle_id[i];
     return OSDK_ACTIVATION_SIZE;
 }
@@ -63,6 +80,9 @@ size_t osdk_encode_activation(uint32_t app_id, uint32_t api_level, uint32_t sdk_
 size_t osdk_encode_set_frequency(const uint8_t codes[16], uint8_t out[OSDK_SET_FREQUENCY_SIZE])
 {
     size_t i;
+    /*@ loop invariant 0 <= i <= 16;
+        loop assigns i, out[0 .. 15];
+        loop variant 16 - i; */
     for (i = 0; i < 16; i++) out[0 + i] = codes[i];
     return OSDK_SET_FREQUENCY_SIZE;
 }
@@ -104,6 +124,9 @@ osdk_encode_status_t osdk_encode_frame(uint8_t cmd_set, uint8_t cmd_id, bool is_
     if (is_ack && session == 0) return OSDK_ENCODE_BAD_SESSION;
     if (written) *written = frame_len;
     if (out == NULL || cap < frame_len) return OSDK_ENCODE_BUFFER_TOO_SMALL;
+    /*@ loop invariant 0 <= i <= OSDK_ENCODE_HEADER_LEN;
+        loop assigns i, out[0 .. OSDK_ENCODE_HEADER_LEN - 1];
+        loop variant OSDK_ENCODE_HEADER_LEN - i; */
     for (i = 0; i < OSDK_ENCODE_HEADER_LEN; i++) out[i] = 0;
     put_bits(out, 0u, 8u, 0xaau); /* sof */
     put_bits(out, 8u, 10u, (uint32_t)frame_len); /* len */
@@ -122,6 +145,9 @@ osdk_encode_status_t osdk_encode_frame(uint8_t cmd_set, uint8_t cmd_id, bool is_
             out[at++] = cmd_set;
             out[at++] = cmd_id;
         }
+        /*@ loop invariant 0 <= i <= len && at == OSDK_ENCODE_HEADER_LEN + (is_ack ? 0 : 2) + i;
+            loop assigns i, at, out[OSDK_ENCODE_HEADER_LEN .. cap - 1];
+            loop variant len - i; */
         for (i = 0; i < len; i++) out[at++] = value[i];
         put_le(out + at, osdk_crc32(out, at), OSDK_ENCODE_CRC32_LEN);
     }

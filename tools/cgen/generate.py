@@ -749,6 +749,7 @@ class Generator:
                 name = f"{t.cname}_valid_{f.id}"
                 expr = self.valid_expr(t, f, Typed("v", f"enum:{f.enum.key}" if f.enum else "int"))
                 h(f"/* `valid` of {t.ksy_name}.{f.id}: {f.valid!r} */")
+                h("/*@ assigns \\nothing; */")
                 h(f"bool {name}(int64_t v);")
                 c.func(f"bool {name}(int64_t v)")
                 c(f"return {expr};")
@@ -1007,6 +1008,8 @@ class Generator:
         h(f"#define {FRAME_TYPE.upper()}_SOF 0x{sof.contents[0]:02x}u")
         for fid, (off, width) in fields.items():
             h(f"/* {fid}: bits {off}..{off + width - 1} of the header, read without checks. */")
+            h(f"/*@ requires \\valid_read(header + (0 .. {FRAME_TYPE.upper()}_HEADER_LEN - 1));")
+            h(f"    assigns \\nothing; */")
             h(f"uint64_t {FRAME_TYPE}_peek_{fid}(const uint8_t *header);")
             c.func(f"uint64_t {FRAME_TYPE}_peek_{fid}(const uint8_t *header)")
             c(f"return osdk_peek_bits_le(header, {off}, {width});")
@@ -1032,14 +1035,14 @@ class Generator:
         L(f"uint16_t computed = osdk_crc16(header + {first}, {last - first + 1}u);")
         L(f"uint64_t stored = {FRAME_TYPE}_peek_crc16(header);")
         L("if ((uint64_t)computed != stored) {")
-        L('    osdk_detail(detail, cap, "CRC-16 is 0x%04x, expected 0x%04x", (unsigned)stored, (unsigned)computed);')
+        L('    DETAIL(detail, cap, "CRC-16 is 0x%04x, expected 0x%04x", stored, computed);')
         L("    return OSDK_ERR_BAD_CRC16;")
         L("}")
         for x in checks:
             L("{")
             L(f"    uint64_t v = {FRAME_TYPE}_peek_{x}(header);")
             L(f"    if (!{self.valid_predicates[(t.cname, x)]}((int64_t)v)) {{")
-            L(f'        osdk_detail(detail, cap, "header field {x} is %lu, which its valid check rejects", (unsigned long)v);')
+            L(f'        DETAIL(detail, cap, "header field {x} is %lu, which its valid check rejects", v, 0);')
             L(f"        return {self.class_of_field(x)};")
             L("    }")
             L("}")

@@ -91,6 +91,15 @@ def _params(cmd: dict, bits: bool) -> list[str]:
     return out
 
 
+def _encoder_contract(cmd: dict, size: str) -> str:
+    """The ACSL contract of one value encoder: out holds the value's size,
+    each array argument its count, and only out is written."""
+    reads = [f"    requires \\valid_read({f['id']} + (0 .. {(f.get('size') or f['count']) - 1}));"
+             for f in cmd["fields"] if f["wire"] == "bytes" or "count" in f]
+    return "\n".join([f"/*@ requires \\valid(out + (0 .. {size} - 1));", *reads,
+                      f"    assigns out[0 .. {size} - 1];", f"    ensures \\result == {size}; */"])
+
+
 def _encoders(library: dict) -> tuple[str, str]:
     decls, defs = [], []
     for cmd in library["sent_commands"]:
@@ -112,6 +121,7 @@ def _encoders(library: dict) -> tuple[str, str]:
                              "/* Writes the value into out; returns its size. */")
             else:
                 decls.append("/* Writes the value into out; returns its size. */")
+            decls.append(_encoder_contract(cmd, size))
             decls.append(f"size_t {fn}({params});")
             body = []
             if has_float and not bits:
@@ -125,6 +135,9 @@ def _encoders(library: dict) -> tuple[str, str]:
                         w = 1 if f["wire"] == "bytes" else _WIDTH[f["wire"]]
                         loop = True
                         put = f"out[{at} + i] = {f['id']}[i];" if w == 1 else f"put_le(out + {at} + {w} * i, {f['id']}[i], {w});"
+                        body.append(f"    /*@ loop invariant 0 <= i <= {n};\n"
+                                    f"        loop assigns i, out[{at} .. {at + n * w - 1}];\n"
+                                    f"        loop variant {n} - i; */")
                         body.append(f"    for (i = 0; i < {n}; i++) {put}")
                         at += n * w
                     elif f["wire"] == "u1":
