@@ -96,3 +96,16 @@ def test_native_and_pure_python_decoding_keep_the_same_values(monkeypatch, profi
     data = python_seen[0][1]
     assert data["battery"] == 90 and data["velocity"]["x"] == {"f32": "0x3f8ccccd", "value": 1.100000023841858}
     assert python_seen[4][1]["velocity"]["x"]["value"] == "NaN"
+
+
+@pytest.mark.parametrize("cut", [1, 11, 12, 60])
+def test_a_run_that_ends_inside_a_frame_counts_no_incident(cut):
+    # the last read stopped inside a frame: its start is no error of the device, nor are the rest of its bytes,
+    # which the receiver scans again as garbage (0xAA nowhere in them, as an encrypted frame's often are not)
+    value = bytes(range(1, 100))
+    frames = [encode(cmd_set=2, cmd_id=0x7F, value=value, seq=s) for s in range(3)]
+    assert 0xAA not in frames[-1][1:cut]
+    an = Analyzer("m100-fw3.1")
+    an.feed_rx(T0, b"".join(frames[:-1]) + frames[-1][:cut])
+    an.finish()
+    assert an.incidents == [] and an.frames == 2, an.incidents

@@ -196,9 +196,15 @@ class Analyzer:
 
     def finish(self, t: float | None = None) -> None:
         with self.lock:
+            cut_end = -1
             for ev in self.rx_deframer.finish():
                 if isinstance(ev, Rejected) and ev.error == "truncated_frame":
-                    continue   # the run ended in the middle of a frame: not the device's fault
+                    # the run ended in the middle of a frame: not the device's fault, and neither are the
+                    # rest of its bytes, which the receiver then scans again as garbage
+                    cut_end = max(cut_end, ev.offset + ev.length)
+                    continue
+                if not isinstance(ev, Frame) and ev.offset < cut_end:
+                    continue
                 self._rx_event(self.last_t or 0.0, ev)
             self._close_gap(final=True)
             if t is not None:
