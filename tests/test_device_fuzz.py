@@ -419,8 +419,10 @@ def test_a_broadcast_slow_from_the_start_is_no_finding(load1, tmp_path):
         host = results["fuzz.host"]
         assert host.status == "skip" and host.kind == "host too busy"
         assert "load average 5.00 on 2 cores" in host.message
-    elif out.not_judged:
-        # the idle host was busy after all: this test host left the reader unscheduled for 0.5 s or more
+    elif out.not_judged or (not out.unwell and session.port.port.state.host_stalls):
+        # the idle host was busy after all: this test host left the reader unscheduled for 0.5 s or more.
+        # Frames read late arrive in a burst, so the slow broadcast may even have looked fast enough (a
+        # lone-clone CI run sent all 60 cases that way): either way, no finding, which is what must hold
         assert session.port.port.state.host_stalls, out.not_judged
     else:
         assert "no case sent" in out.unwell
