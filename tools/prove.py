@@ -62,23 +62,28 @@ UNITS: dict[str, dict | None] = {
 DEFINITION = re.compile(r"^(?:static\s+)?(?:inline\s+)?[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\([^;{]*\)\s*\n\{", re.M)
 
 
-def left_out(unit: str, source: Path) -> list[str]:
-    """The functions `unit` defines that are not proved."""
-    chosen = selected(unit, source)
-    if chosen is None:
-        return []
-    return [f for f in DEFINITION.findall((source / unit).read_text(encoding="utf-8")) if f not in chosen]
+def _split(unit: str, source: Path) -> tuple[list[str] | None, list[str]]:
+    """The functions of `unit` to prove (None: all of them) and those it defines but leaves out."""
+    rule = UNITS.get(unit)
+    if rule is None:
+        return None, []
+    defined = DEFINITION.findall((source / unit).read_text(encoding="utf-8"))
+    if "only" in rule:
+        chosen = [f for f in defined if any(re.fullmatch(r, f) for r in rule["only"])] + rule.get("also", [])
+    else:
+        chosen = [f for f in defined if not any(re.fullmatch(r, f) for r in rule["except"])]
+    return chosen, [f for f in defined if f not in chosen]
 
 
 def selected(unit: str, source: Path) -> list[str] | None:
     """The functions of `unit` to prove (None: all of them)."""
-    rule = UNITS.get(unit)
-    if rule is None:
-        return None
-    defined = DEFINITION.findall((source / unit).read_text(encoding="utf-8"))
-    if "only" in rule:
-        return [f for f in defined if any(re.fullmatch(r, f) for r in rule["only"])] + rule.get("also", [])
-    return [f for f in defined if not any(re.fullmatch(r, f) for r in rule["except"])]
+    return _split(unit, source)[0]
+
+
+def left_out(unit: str, source: Path) -> list[str]:
+    """The functions `unit` defines that are not proved."""
+    return _split(unit, source)[1]
+
 
 # Planted bugs, each in a copy of the library: the proof of the function must
 # then fail, on the goal named (a proof that cannot fail shows nothing).

@@ -37,9 +37,7 @@ def _offer(fd: int, data: bytes) -> int:
     a line does not wait for a reader, what nobody takes in time is lost."""
     try:
         return len(data) - os.write(fd, data)
-    except BlockingIOError:
-        return len(data)
-    except OSError:   # nobody holds that port yet
+    except OSError:   # BlockingIOError (full), or nobody holds that port yet
         return len(data)
 
 

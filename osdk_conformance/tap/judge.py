@@ -16,6 +16,7 @@ one command waiting in that session, when the SEQ is the same.
 """
 from __future__ import annotations
 
+import math
 import struct
 from collections import deque
 from dataclasses import dataclass, field
@@ -158,8 +159,7 @@ class HostJudge:
 
     def finish(self, t: float | None = None) -> None:
         """The end of the input: the host's bytes still held back are judged, then the analyser finishes."""
-        while self._held:
-            self.an.feed_tx(*self._held.popleft())
+        self._release(math.inf)
         self.an.finish(t)
 
     def at(self, t: float) -> str:
