@@ -2,8 +2,9 @@
 osdk_conformance.bench.ycable FC_PORT BAUD` opens the flight controller's port,
 makes a port for the host and two RX-only ports (one hears the host's TX
 line, one the flight controller's), prints them as one JSON line and moves
-bytes until its stdin closes or it gets SIGINT or SIGTERM; then it prints
-how many bytes each port did not take in time (a line does not wait).
+bytes until its stdin closes (exit 0) or it gets SIGINT or SIGTERM (130,
+143); then it prints how many bytes each port did not take in time (a line
+does not wait).
 
 A real Y-cable is copper and two USB adapters: it never stalls the line
 between host and flight controller, whatever the tap's machine does. So the
@@ -75,7 +76,8 @@ def run(fc_path: str, baud: int) -> int:
                 lost[names[to]] += _offer(to, data)
     # what each port did not take, for the caller to tell a lossy run from a clean one
     print(json.dumps({"lost bytes": lost}), flush=True)
-    return 0
+    # stdin closed is the caller's usual stop; a signal gives 128 + its number, as every osdkc command does
+    return 128 + stopped[0] if isinstance(stopped[0], int) else 0
 
 
 def spawn(fc_path: str, baud: int) -> tuple[subprocess.Popen, dict]:
