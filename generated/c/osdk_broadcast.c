@@ -237,7 +237,7 @@ static const char *const item_names[OSDK_BROADCAST_ITEM_COUNT_] = {
 
 const char *osdk_broadcast_item_name(osdk_broadcast_item_t item)
 {
-    return (unsigned)item < OSDK_BROADCAST_ITEM_COUNT_ ? item_names[item] : NULL;
+    return (unsigned)item < OSDK_BROADCAST_ITEM_COUNT_ ? item_names[(unsigned)item] : NULL;
 }
 
 static const osdk_broadcast_item_t items_m100_fw2_3[12] = { /* m100-fw2.3 */

@@ -44,6 +44,7 @@ typedef enum {
 } osdk_status_t;
 
 /* The error class as docs/VALUE-MODEL.md spells it ("ok" for OSDK_OK). */
+/*@ assigns \nothing; */
 const char *osdk_status_name(osdk_status_t status);
 
 typedef struct {
@@ -53,6 +54,8 @@ typedef struct {
     size_t offset;      /* absolute offset in the decoded buffer */
 } osdk_error_t;
 
+/*@ requires \valid(err);
+    assigns *err; */
 void osdk_error_clear(osdk_error_t *err);
 
 /* ---- values ------------------------------------------------------------------------ */
@@ -74,7 +77,9 @@ typedef struct {
     double value;
 } osdk_f64_t;
 
+/*@ assigns \nothing; */
 float osdk_f32_from_bits(uint32_t bits);
+/*@ assigns \nothing; */
 double osdk_f64_from_bits(uint64_t bits);
 
 /* ---- streams ------------------------------------------------------------------------- */
@@ -93,21 +98,71 @@ typedef struct {
 /* data may be NULL (then size is taken as 0): the stream then reads from a
  * static empty buffer, so that no decoder ever does arithmetic on a null
  * pointer (NULL + 0 is undefined in C99, 6.5.6). */
+/* The comments that open with an @ are ACSL contracts: what `make prove`
+ * proves the functions do, and what they may assume (docs/VERIFICATION.md).
+ * A stream is fit to read when its bytes are readable and its position is
+ * within them; a parse leaves it on the same bytes (said of the pointer and
+ * the size alone: whether the bytes are readable is the caller's to know,
+ * and the provers lose it where a parse function's own substream ends);
+ * byte fields point to readable bytes. */
+/*@ predicate osdk_stream_ok(osdk_stream_t *io) =
+      \valid(io) && io->pos <= io->size &&
+      \valid_read(io->data + (0 .. io->size - 1)) &&
+      \object_pointer(io->data) && \object_pointer(io->data + io->size);
+    predicate osdk_stream_on(osdk_stream_t *io, uint8_t *data, integer size) =
+      io->data == data && io->size == size && io->pos <= io->size;
+    predicate osdk_bytes_ok(osdk_bytes_t *b) =
+      \valid_read(b->ptr + (0 .. b->len - 1)) && \object_pointer(b->ptr) && \object_pointer(b->ptr + b->len);
+*/
+/*@ requires \valid(io);
+    requires data == \null || size == 0 || \valid_read(data + (0 .. size - 1));
+    assigns *io;
+    ensures osdk_stream_ok(io); */
 void osdk_stream_init(osdk_stream_t *io, const uint8_t *data, size_t size);
+/*@ requires osdk_stream_ok(io) && \valid(out) && \separated(io, out);
+    assigns *io, *out;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size)); */
 bool osdk_read_uint(osdk_stream_t *io, unsigned nbytes, int big_endian, uint64_t *out);
+/*@ requires osdk_stream_ok(io) && \valid(out) && \separated(io, out);
+    assigns *io, *out;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size)); */
 bool osdk_read_bits_le(osdk_stream_t *io, unsigned nbits, uint64_t *out);
+/*@ requires osdk_stream_ok(io) && \valid(out) && \separated(io, out);
+    assigns *io, *out;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size));
+    ensures \result ==> osdk_bytes_ok(out) && out->len == n; */
 bool osdk_read_bytes(osdk_stream_t *io, uint64_t n, osdk_bytes_t *out);
+/*@ requires osdk_stream_ok(io) && \valid(out) && \separated(io, out);
+    assigns *io, *out;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size)) && osdk_bytes_ok(out); */
 void osdk_read_bytes_eos(osdk_stream_t *io, osdk_bytes_t *out);
+/*@ requires osdk_stream_ok(io) && \valid(sub) && \separated(io, sub);
+    assigns *io, *sub;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size));
+    ensures \result ==> osdk_stream_ok(sub); */
 bool osdk_substream(osdk_stream_t *io, uint64_t n, osdk_stream_t *sub);
+/*@ requires osdk_stream_ok(io) && \valid(sub) && \separated(io, sub);
+    assigns *io, *sub;
+    ensures osdk_stream_ok(io) && osdk_stream_on(io, \old(io->data), \old(io->size)) && osdk_stream_ok(sub); */
 void osdk_substream_eos(osdk_stream_t *io, osdk_stream_t *sub);
 /* A reader over the same bytes as io, at pos (for `pos` instances). */
+/*@ requires osdk_stream_ok((osdk_stream_t *)io) && \valid(at) && \separated(io, at);
+    assigns *at;
+    ensures \result ==> osdk_stream_ok(at); */
 bool osdk_stream_at(const osdk_stream_t *io, uint64_t pos, osdk_stream_t *at);
+/* The two's complement value of the low `bits` bits of value; bits is the
+ * width of a Kaitai signed integer, 8, 16 or 32, and any other is taken as 64. */
+/*@ assigns \nothing; */
 int64_t osdk_sign_extend(uint64_t value, unsigned bits);
 /* Bits [bit_offset, bit_offset + nbits) of buf, bit 0 of byte 0 first. */
 /*@ requires nbits <= 64 && bit_offset <= 65536;
     requires nbits == 0 || \valid_read(buf + (0 .. (bit_offset + nbits - 1) / 8));
     assigns \nothing; */
 uint64_t osdk_peek_bits_le(const uint8_t *buf, unsigned bit_offset, unsigned nbits);
+/*@ requires err == \null || \valid(err);
+    requires io == \null || \valid_read(io);
+    assigns *err;
+    ensures \result == status; */
 osdk_status_t osdk_fail(osdk_error_t *err, osdk_status_t status, const char *type, const char *field,
                         const osdk_stream_t *io);
 
@@ -116,6 +171,7 @@ osdk_status_t osdk_fail(osdk_error_t *err, osdk_status_t status, const char *typ
  * quotient 2^63 has no int64_t, gives INT64_MIN (two's complement
  * wrap-around); C leaves a / b and a % b undefined there. Any remainder
  * by -1 is 0. */
+/*@ assigns \nothing; */
 static inline int64_t osdk_kdiv(int64_t a, int64_t b)
 {
     int64_t q;
@@ -126,6 +182,7 @@ static inline int64_t osdk_kdiv(int64_t a, int64_t b)
     return q;
 }
 
+/*@ assigns \nothing; */
 static inline int64_t osdk_kmod(int64_t a, int64_t b)
 {
     int64_t r;
@@ -144,6 +201,7 @@ typedef enum {
     OSDK_BROADCAST_ITEMS_CONTROL_DEVICE_ONBOARD_DEVICE = 2
 } osdk_broadcast_items_control_device_t;
 /* The spec's name of a control_device value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_broadcast_items_control_device_name(int64_t value);
 
 /* enum osdk_broadcast_items::cur_mov_control_mode */
@@ -173,6 +231,7 @@ typedef enum {
     OSDK_BROADCAST_ITEMS_CUR_MOV_CONTROL_MODE_ATTI_CTRL_STOP = 100
 } osdk_broadcast_items_cur_mov_control_mode_t;
 /* The spec's name of a cur_mov_control_mode value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_broadcast_items_cur_mov_control_mode_name(int64_t value);
 
 /* enum osdk_control_mode::horizontal_frame */
@@ -181,6 +240,7 @@ typedef enum {
     OSDK_CONTROL_MODE_HORIZONTAL_FRAME_BODY = 1
 } osdk_control_mode_horizontal_frame_t;
 /* The spec's name of a horizontal_frame value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_control_mode_horizontal_frame_name(int64_t value);
 
 /* enum osdk_control_mode::horizontal_logic */
@@ -190,6 +250,7 @@ typedef enum {
     OSDK_CONTROL_MODE_HORIZONTAL_LOGIC_HORI_POS = 2
 } osdk_control_mode_horizontal_logic_t;
 /* The spec's name of a horizontal_logic value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_control_mode_horizontal_logic_name(int64_t value);
 
 /* enum osdk_control_mode::stable_mode */
@@ -198,6 +259,7 @@ typedef enum {
     OSDK_CONTROL_MODE_STABLE_MODE_STABLE = 1
 } osdk_control_mode_stable_mode_t;
 /* The spec's name of a stable_mode value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_control_mode_stable_mode_name(int64_t value);
 
 /* enum osdk_control_mode::vertical_logic */
@@ -207,6 +269,7 @@ typedef enum {
     OSDK_CONTROL_MODE_VERTICAL_LOGIC_VERT_THRUST = 2
 } osdk_control_mode_vertical_logic_t;
 /* The spec's name of a vertical_logic value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_control_mode_vertical_logic_name(int64_t value);
 
 /* enum osdk_control_mode::yaw_logic */
@@ -215,6 +278,7 @@ typedef enum {
     OSDK_CONTROL_MODE_YAW_LOGIC_YAW_RATE = 1
 } osdk_control_mode_yaw_logic_t;
 /* The spec's name of a yaw_logic value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_control_mode_yaw_logic_name(int64_t value);
 
 /* enum osdk_frame::command_set */
@@ -224,6 +288,7 @@ typedef enum {
     OSDK_FRAME_COMMAND_SET_PUSH = 2
 } osdk_frame_command_set_t;
 /* The spec's name of a command_set value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_frame_command_set_name(int64_t value);
 
 /* enum osdk_frame::encryption */
@@ -232,6 +297,7 @@ typedef enum {
     OSDK_FRAME_ENCRYPTION_AES256 = 1
 } osdk_frame_encryption_t;
 /* The spec's name of a encryption value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_frame_encryption_name(int64_t value);
 
 /* enum osdk_payload::activation_result */
@@ -247,6 +313,7 @@ typedef enum {
     OSDK_PAYLOAD_ACTIVATION_RESULT_WRONG_SDK_VERSION = 8
 } osdk_payload_activation_result_t;
 /* The spec's name of a activation_result value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_activation_result_name(int64_t value);
 
 /* enum osdk_payload::control_ack */
@@ -259,6 +326,7 @@ typedef enum {
     OSDK_PAYLOAD_CONTROL_ACK_IN_IOC_MODE = 201
 } osdk_payload_control_ack_t;
 /* The spec's name of a control_ack value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_control_ack_name(int64_t value);
 
 /* enum osdk_payload::control_request_code */
@@ -267,6 +335,7 @@ typedef enum {
     OSDK_PAYLOAD_CONTROL_REQUEST_CODE_OBTAIN = 1
 } osdk_payload_control_request_code_t;
 /* The spec's name of a control_request_code value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_control_request_code_name(int64_t value);
 
 /* enum osdk_payload::frequency_ack */
@@ -275,6 +344,7 @@ typedef enum {
     OSDK_PAYLOAD_FREQUENCY_ACK_PARAMETER_ERROR = 1
 } osdk_payload_frequency_ack_t;
 /* The spec's name of a frequency_ack value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_frequency_ack_name(int64_t value);
 
 /* enum osdk_payload::frequency_code */
@@ -289,6 +359,7 @@ typedef enum {
     OSDK_PAYLOAD_FREQUENCY_CODE_HZ_400 = 7
 } osdk_payload_frequency_code_t;
 /* The spec's name of a frequency_code value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_frequency_code_name(int64_t value);
 
 /* enum osdk_payload::profile */
@@ -298,6 +369,7 @@ typedef enum {
     OSDK_PAYLOAD_PROFILE_A3_FW3_1 = 2
 } osdk_payload_profile_t;
 /* The spec's name of a profile value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_profile_name(int64_t value);
 
 /* enum osdk_payload::version_ack */
@@ -306,6 +378,7 @@ typedef enum {
     OSDK_PAYLOAD_VERSION_ACK_NOT_ACTIVATED = 65281
 } osdk_payload_version_ack_t;
 /* The spec's name of a version_ack value, or NULL when it has none. */
+/*@ assigns \nothing; */
 const char *osdk_payload_version_ack_name(int64_t value);
 
 
@@ -789,52 +862,202 @@ bool osdk_frame_valid_res1(int64_t v);
  * first). params are the ksy params; parent/root exist where the type's
  * expressions use _parent/_root. Fields whose `if` is false have
  * <field>_present == false. */
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_a3_fw3_1_parse(osdk_stream_t *io, osdk_broadcast_a3_fw3_1_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_control_info_parse(osdk_stream_t *io, osdk_broadcast_items_control_info_t *self, bool has_mode, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_gimbal_parse(osdk_stream_t *io, osdk_broadcast_items_gimbal_t *self, bool has_limit_byte, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_gimbal_limit_parse(osdk_stream_t *io, osdk_broadcast_items_gimbal_limit_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_gps_detail_parse(osdk_stream_t *io, osdk_broadcast_items_gps_detail_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_magnetometer_parse(osdk_stream_t *io, osdk_broadcast_items_magnetometer_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_position_parse(osdk_stream_t *io, osdk_broadcast_items_position_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_quaternion_parse(osdk_stream_t *io, osdk_broadcast_items_quaternion_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_rc_parse(osdk_stream_t *io, osdk_broadcast_items_rc_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_rtk_detail_parse(osdk_stream_t *io, osdk_broadcast_items_rtk_detail_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_time_stamp_parse(osdk_stream_t *io, osdk_broadcast_items_time_stamp_t *self, bool has_ns_and_sync, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_vector3f_parse(osdk_stream_t *io, osdk_broadcast_items_vector3f_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_items_velocity_parse(osdk_stream_t *io, osdk_broadcast_items_velocity_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_m100_fw2_3_parse(osdk_stream_t *io, osdk_broadcast_m100_fw2_3_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_broadcast_m100_fw3_1_parse(osdk_stream_t *io, osdk_broadcast_m100_fw3_1_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_control_mode_parse(osdk_stream_t *io, osdk_control_mode_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_frame_parse(osdk_stream_t *io, osdk_frame_t *self, uint8_t profile, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    requires \valid_read(parent) && \valid_read(root);
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_frame_frame_data_parse(osdk_stream_t *io, osdk_frame_frame_data_t *self, const osdk_frame_t *parent, const osdk_frame_t *root, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_movement_control_parse(osdk_stream_t *io, osdk_movement_control_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_parse(osdk_stream_t *io, osdk_payload_t *self, uint8_t cmd_set, uint8_t cmd_id, bool is_ack, uint8_t profile, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_activation_ack_value_parse(osdk_stream_t *io, osdk_payload_activation_ack_value_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_activation_request_parse(osdk_stream_t *io, osdk_payload_activation_request_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_broadcast_parse(osdk_stream_t *io, osdk_payload_broadcast_t *self, uint8_t profile, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_control_ack_value_parse(osdk_stream_t *io, osdk_payload_control_ack_value_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_control_request_parse(osdk_stream_t *io, osdk_payload_control_request_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_frequency_ack_value_parse(osdk_stream_t *io, osdk_payload_frequency_ack_value_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_frequency_request_parse(osdk_stream_t *io, osdk_payload_frequency_request_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_lost_control_parse(osdk_stream_t *io, osdk_payload_lost_control_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_lost_control_ack_value_parse(osdk_stream_t *io, osdk_payload_lost_control_ack_value_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_unknown_value_parse(osdk_stream_t *io, osdk_payload_unknown_value_t *self, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_version_ack_value_parse(osdk_stream_t *io, osdk_payload_version_ack_value_t *self, uint8_t profile, osdk_error_t *err);
+/*@ requires osdk_stream_ok(io) && \valid(self) && \separated(io, self);
+    requires err == \null || (\valid(err) && \separated(err, io, self));
+    assigns *io, *self, *err;
+    ensures \result == OSDK_OK ==> osdk_stream_on(io, \old(io->data), \old(io->size)); */
 osdk_status_t osdk_payload_version_query_parse(osdk_stream_t *io, osdk_payload_version_query_t *self, osdk_error_t *err);
 
 /* Decode a whole osdk_broadcast_a3_fw3_1 from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_broadcast_a3_fw3_1_decode(const uint8_t *buf, size_t len, osdk_broadcast_a3_fw3_1_t *out, osdk_error_t *err);
 /* Decode a whole osdk_broadcast_m100_fw2_3 from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_broadcast_m100_fw2_3_decode(const uint8_t *buf, size_t len, osdk_broadcast_m100_fw2_3_t *out, osdk_error_t *err);
 /* Decode a whole osdk_broadcast_m100_fw3_1 from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_broadcast_m100_fw3_1_decode(const uint8_t *buf, size_t len, osdk_broadcast_m100_fw3_1_t *out, osdk_error_t *err);
 /* Decode a whole osdk_control_mode from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_control_mode_decode(const uint8_t *buf, size_t len, osdk_control_mode_t *out, osdk_error_t *err);
 /* Decode a whole osdk_frame from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_frame_decode(const uint8_t *buf, size_t len, uint8_t profile, osdk_frame_t *out, osdk_error_t *err);
 /* Decode a whole osdk_movement_control from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_movement_control_decode(const uint8_t *buf, size_t len, osdk_movement_control_t *out, osdk_error_t *err);
 /* Decode a whole osdk_payload from buf[0..len). */
+/*@ requires buf == \null || len == 0 || \valid_read(buf + (0 .. len - 1));
+    requires \valid(out) && (err == \null || (\valid(err) && \separated(err, out)));
+    assigns *out, *err; */
 osdk_status_t osdk_payload_decode(const uint8_t *buf, size_t len, uint8_t cmd_set, uint8_t cmd_id, bool is_ack, uint8_t profile, osdk_payload_t *out, osdk_error_t *err);
 
 /* ---- frame header, as the receiver reads it ------------------------------------------ */

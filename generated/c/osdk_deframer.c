@@ -330,25 +330,32 @@ static bool next_event(osdk_deframer_t *d, bool final, osdk_event_t *ev)
  * the buffer's start when it reaches the end); how many bytes it took. */
 /*@ requires osdk_deframer_ok(d) && d->buf != \null && d->pending == 0;
     requires \valid_read(data + (0 .. len - 1));
+    requires \separated(data + (0 .. len - 1), d->buf + (0 .. d->cap - 1));
     assigns d->buf[0 .. d->cap - 1], d->start, d->fill;
     ensures osdk_deframer_ok(d) && d->pending == 0 && \result <= len; */
-static size_t take(osdk_deframer_t *d, const uint8_t *data, size_t len)
+static size_t take(osdk_deframer_t *d, const uint8_t *restrict data, size_t len)
 {
-    size_t space, k, i;
-    if (d->start > 0 && d->start + d->fill == d->cap) {
-        /*@ loop invariant 0 <= i <= d->fill;
-            loop assigns i, d->buf[0 .. d->cap - 1];
-            loop variant d->fill - i; */
-        for (i = 0; i < d->fill; i++) d->buf[i] = d->buf[d->start + i];   /* forward: the source is above */
-        d->start = 0;
+    /* The window in locals and the bytes through restrict pointers: else a
+     * byte store may alias d, the compiler reads d's fields again after each
+     * one, and the copy is about a fifth slower than memcpy (gcc -O2 makes
+     * this loop a memcpy call). */
+    uint8_t *restrict buf = d->buf;
+    size_t start = d->start, fill = d->fill, space, k, i;
+    if (start > 0 && start + fill == d->cap) {
+        /*@ loop invariant 0 <= i <= fill;
+            loop assigns i, buf[0 .. d->cap - 1];
+            loop variant fill - i; */
+        for (i = 0; i < fill; i++) buf[i] = buf[start + i];   /* forward: the source is above */
+        start = 0;
     }
-    space = d->cap - (d->start + d->fill);
+    space = d->cap - (start + fill);
     k = len < space ? len : space;
     /*@ loop invariant 0 <= i <= k;
-        loop assigns i, d->buf[0 .. d->cap - 1];
+        loop assigns i, buf[0 .. d->cap - 1];
         loop variant k - i; */
-    for (i = 0; i < k; i++) d->buf[d->start + d->fill + i] = data[i];
-    d->fill += k;
+    for (i = 0; i < k; i++) buf[start + fill + i] = data[i];
+    d->start = start;
+    d->fill = fill + k;
     return k;
 }
 

@@ -82,7 +82,8 @@ typedef struct {
     ensures osdk_deframer_ok(d) && d->pending == 0; */
 bool osdk_deframer_init(osdk_deframer_t *d, uint8_t *buf, size_t cap);
 /* Feed any number of bytes; fn is called for every event they complete.
- * fn must not call back into the same deframer. */
+ * data must not lie in the deframer's own buffer, and fn must not call
+ * back into the same deframer. */
 void osdk_deframer_feed(osdk_deframer_t *d, const uint8_t *data, size_t len, osdk_event_fn fn, void *user);
 /* The input has ended: report what is left. */
 void osdk_deframer_finish(osdk_deframer_t *d, osdk_event_fn fn, void *user);

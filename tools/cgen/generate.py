@@ -464,6 +464,7 @@ class Generator:
                 h(f"    {self.enum_const(e, n)} = {v}{',' if i + 1 < len(e.values) else ''}")
             h(f"}} {e.cname}_t;")
             h(f"/* The spec's name of a {e.name} value, or NULL when it has none. */")
+            h("/*@ assigns \\nothing; */")
             h(f"const char *{e.cname}_name(int64_t value);")
             h()
             c.func(f"const char *{e.cname}_name(int64_t value)")
@@ -546,11 +547,7 @@ class Generator:
     # ---- parse functions -------------------------------------------------------------------
 
     def parse_signature(self, t: TypeSpec) -> str:
-        args = ["osdk_stream_t *io", f"{t.cname}_t *self"]
-        if t.cname in self.parent_of:
-            args.append(f"const {self.parent_of[t.cname].cname}_t *parent")
-        if self.needs_root[t.cname]:
-            args.append(f"const {self.root_of(t).cname}_t *root")
+        args = ["osdk_stream_t *io", f"{t.cname}_t *self", *self.context_args(t)]
         for p in t.params:
             args.append(f"{self.param_ctype(p.ptype)} {p.id}")
         args.append("osdk_error_t *err")
@@ -603,9 +600,8 @@ class Generator:
         elif f.kind == "contents":
             n = len(f.contents)
             L(f"if (!osdk_read_bytes(io, {n}, &{lval})) {trunc}")
-            arr = ", ".join(f"0x{b:02x}" for b in f.contents)
-            L(f"{{ static const uint8_t expected[{n}] = {{{arr}}};")
-            L(f"  if (memcmp({lval}.ptr, expected, {n}) != 0) {self.fail(t, f, self.class_of_field(f.id))} }}")
+            differs = " || ".join(f"{lval}.ptr[{i}] != 0x{b:02x}" for i, b in enumerate(f.contents))
+            L(f"if ({differs}) {self.fail(t, f, self.class_of_field(f.id))}")
         elif f.kind == "bytes":
             if f.size_eos:
                 L(f"osdk_read_bytes_eos(io, &{lval});")
@@ -692,20 +688,51 @@ class Generator:
         L("if (st != OSDK_OK) return st;")
         L.depth -= 1
 
+    def context_args(self, t: TypeSpec) -> list[str]:
+        """The parent and root a parse function of t is given, as parameters."""
+        args = []
+        if t.cname in self.parent_of:
+            args.append(f"const {self.parent_of[t.cname].cname}_t *parent")
+        if self.needs_root[t.cname]:
+            args.append(f"const {self.root_of(t).cname}_t *root")
+        return args
+
+    def parse_contract(self, t: TypeSpec) -> str:
+        """What a parse function of t (or of one of its fields) needs and does:
+        `make prove` proves it of each, and assumes it at each call."""
+        reads = [a.rsplit("*", 1)[1] for a in self.context_args(t)]
+        lines = ["/*@ requires osdk_stream_ok(io) && \\valid(self) && \\separated(io, self);",
+                 "    requires err == \\null || (\\valid(err) && \\separated(err, io, self));"]
+        if reads:
+            lines.append("    requires " + " && ".join(f"\\valid_read({r})" for r in reads) + ";")
+        lines += ["    assigns *io, *self, *err;",
+                  "    ensures \\result == OSDK_OK ==> osdk_stream_on(io, \\old(io->data), \\old(io->size)); */"]
+        return "\n".join(lines)
+
     def gen_parse(self, t: TypeSpec) -> str:
+        """One static function per field, then the parse function that calls
+        them in order. Small functions are what keeps the proof tractable: a
+        parse function's goals then follow from the contract of the call just
+        before, not from every read and write since its start; gcc and clang
+        inline them back."""
         L = Lines()
         L(f"/* {t.ksy_name} */")
-        L.func(self.parse_signature(t))
-        L("uint64_t u = 0;")
-        L("memset(self, 0, sizeof *self);")
-        for p in t.params:
-            L(f"self->{p.id} = {p.id};")
-        if t.cname in self.parent_of:
-            L("(void)parent;")
-        if self.needs_root[t.cname]:
-            L("(void)root;")
+        L("/*@ requires \\valid(self);")
+        L("    assigns *self; */")
+        L.func(f"static void {t.cname}__zero({t.cname}_t *self)")
+        L(f"static const {t.cname}_t zero;")
+        L("*self = zero;")
+        L.close()
+        L()
+        context = [a.rsplit("*", 1)[1] for a in self.context_args(t)]
+        reader_args = ", ".join(["io", "self", *context, "err"])
+        readers = []
         for f in t.fields:
-            L(f"/* {f.id} */")
+            name = f"{t.cname}__read_{f.id}"
+            readers.append(name)
+            L(self.parse_contract(t))
+            L.func(f"static osdk_status_t {name}({', '.join(['osdk_stream_t *io', f'{t.cname}_t *self', *self.context_args(t), 'osdk_error_t *err'])})")
+            L("uint64_t u = 0;")
             if f.cond is not None:
                 self._wanted = set()
                 cond = self.tr(t, f.cond, 'bool')
@@ -717,6 +744,9 @@ class Generator:
             self._wanted = set()
             if f.repeat is not None:
                 body(f"self->{f.id}_count = {f.repeat};")
+                body(f"/*@ loop invariant 0 <= i <= {f.repeat} && osdk_stream_ok(io);")
+                body("    loop assigns i, u, *io, *self;")
+                body(f"    loop variant {f.repeat} - i; */")
                 body.open(f"for (size_t i = 0; i < {f.repeat}; i++) {{")
                 self.gen_read(body, t, f, f"self->{f.id}[i]")
                 body.close()
@@ -726,8 +756,22 @@ class Generator:
             L.out.extend(body.out)
             if f.cond is not None:
                 L.close()
-        L("(void)u;")
-        L("(void)err;")
+            for unused in ["u", *context, "err"]:
+                L(f"(void){unused};")
+            L("return OSDK_OK;")
+            L.close()
+            L()
+        L.func(self.parse_signature(t))
+        if readers:
+            L("osdk_status_t st;")
+        L(f"{t.cname}__zero(self);")
+        for p in t.params:
+            L(f"self->{p.id} = {p.id};")
+        for name in readers:
+            L(f"st = {name}({reader_args});")
+            L("if (st != OSDK_OK) return st;")
+        for unused in [*context, "io", "err"] if not readers else []:
+            L(f"(void){unused};")
         L("return OSDK_OK;")
         L.close()
         L()
@@ -762,6 +806,8 @@ class Generator:
         L = Lines()
         for cname in sorted(self.instances_used):
             for name, ctype, cexpr in self.instances_used[cname]:
+                L("/*@ requires \\valid_read(self);")
+                L("    assigns \\nothing; */")
                 L(f"static {ctype} {cname}__{name}(const {cname}_t *self)")
                 L("{")
                 L(f"    return {cexpr};")
@@ -779,6 +825,9 @@ class Generator:
             sig = (f"osdk_status_t {t.cname}_decode(const uint8_t *buf, size_t len{params}, "
                    f"{t.cname}_t *out, osdk_error_t *err)")
             h(f"/* Decode a whole {t.name} from buf[0..len). */")
+            h("/*@ requires buf == \\null || len == 0 || \\valid_read(buf + (0 .. len - 1));")
+            h("    requires \\valid(out) && (err == \\null || (\\valid(err) && \\separated(err, out)));")
+            h("    assigns *out, *err; */")
             h(sig + ";")
             c.func(sig)
             c("osdk_stream_t io;")
@@ -1177,7 +1226,7 @@ class Generator:
         valid_h, valid_c = self.gen_valid_predicates()
         parse_c = "".join(self.gen_parse(t) for t in self.types)
         structs_h = self.gen_structs()
-        protos = "\n".join(self.parse_signature(t) + ";" for t in self.types) + "\n"
+        protos = "\n".join(self.parse_contract(t) + "\n" + self.parse_signature(t) + ";" for t in self.types) + "\n"
         wrap_h, wrap_c = self.gen_decode_wrappers()
         json_h, json_c = self.gen_json()
         hdr_h, hdr_c, deframer_vals = self.gen_frame_header()

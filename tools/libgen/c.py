@@ -222,7 +222,8 @@ def _broadcast(library: dict, tables: dict) -> dict[str, str]:
         which = [pid for pid, _, items in profiles if item in items]
         note = "every profile" if len(which) == len(profiles) else ", ".join(which)
         sig = f"const {ctypes[item]} *osdk_broadcast_{item}(const osdk_payload_broadcast_t *b)"
-        decls += [f"/* {item} ({note}) */", sig + ";"]
+        decls += [f"/* {item} ({note}) */", "/*@ requires b == \\null || \\valid_read(b);", "    assigns \\nothing; */",
+                  sig + ";"]
         body = ["    if (b == NULL) return NULL;", "    switch (b->data.tag) {"]
         for pid, t, items in profiles:
             if item not in items:
