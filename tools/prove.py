@@ -112,7 +112,7 @@ MUTANTS = {
     "frame-checks-a-byte-it-did-not-read": ("osdk_decoder.c", "osdk_frame__read_sof",
                                             "if (!osdk_read_bytes(io, 1, &self->sof))",
                                             "if (!osdk_read_bytes(io, 0, &self->sof))",
-                                            "osdk_frame__read_sof_assert_rte_mem_access"),
+                                            "osdk_frame_read_sof_assert_rte_mem_access"),   # WP names the goals of `a__b` as `a_b`
 }
 # A planted bug's goal cannot be proved, so it uses each prover's whole timeout: every goal of the
 # proved units takes well under a second, 1 s is ample
