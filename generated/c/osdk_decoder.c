@@ -4173,6 +4173,7 @@ static osdk_status_t osdk_payload_frequency_request__read_codes(osdk_stream_t *i
     uint64_t u = 0;
     self->codes_count = 16;
     /*@ loop invariant 0 <= i <= 16 && osdk_stream_ok(io);
+        loop invariant osdk_stream_on(io, \at(io->data, Pre), \at(io->size, Pre));
         loop assigns i, u, *io, *self;
         loop variant 16 - i; */
     for (size_t i = 0; i < 16; i++) {

@@ -745,6 +745,7 @@ class Generator:
             if f.repeat is not None:
                 body(f"self->{f.id}_count = {f.repeat};")
                 body(f"/*@ loop invariant 0 <= i <= {f.repeat} && osdk_stream_ok(io);")
+                body("    loop invariant osdk_stream_on(io, \\at(io->data, Pre), \\at(io->size, Pre));")
                 body("    loop assigns i, u, *io, *self;")
                 body(f"    loop variant {f.repeat} - i; */")
                 body.open(f"for (size_t i = 0; i < {f.repeat}; i++) {{")
