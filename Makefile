@@ -29,6 +29,7 @@ system-packages:
 
 testees: $(PY_OK) $(JS_OK)
 	@for lang in $(LANGS); do $(MAKE) --no-print-directory -C conformance/testees/$$lang build || exit 1; done
+	@$(MAKE) --no-print-directory -C conformance/testees/c-target boards
 	@$(MAKE) --no-print-directory -C conformance/baseline build
 
 # The generated libraries' examples (examples/<language>/), each built the

@@ -197,6 +197,10 @@ def run_kit(args: argparse.Namespace | None = None) -> int:
         ("doctor", _doctor_on_simulator),
         ("tap", lambda: _tap_on_simulator(reports)),
     ]
+    if CHECKOUT:   # the firmware is built in a checkout (make setup), not shipped in the package
+        steps.insert(1, ("run c-target", lambda: _command(
+            "run", run_arguments, run_command, "--impl", "c-target", "--junit", str(reports / "c-target.xml"),
+            "--html", str(reports / "c-target.html"), "--summary-json", str(reports / "c-target.json"))))
     if os.environ.get("OSDK_SRC"):   # DJI's own host stack from the user's checkout against the simulator
         steps.append(("sdk host-test", lambda: _command("sdk host-test", host_test_arguments, run_host_test,
                                                         "--osdk", os.environ["OSDK_SRC"])))

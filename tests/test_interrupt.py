@@ -151,7 +151,7 @@ def test_kit_stops_at_the_interrupted_step_and_runs_no_later_one(tmp_path):
     child.wait_for("implementations done", stream="err", timeout=180)
     code, out, err, seconds = child.interrupt(signal.SIGINT)
     assert code == 130, out + err
-    assert "kit: INTERRUPTED by SIGINT during run" in out and "not run: selftest, device, fuzz, doctor, tap" in out
+    assert "kit: INTERRUPTED by SIGINT during run" in out and "not run: run c-target, selftest, device, fuzz, doctor, tap" in out
     assert "== osdkc selftest" not in out and "== osdkc sim" not in out and "Traceback" not in err
     assert (reports / "device.html").read_text() == "complete"
     summary = json.loads((reports / "conformance.json").read_text())

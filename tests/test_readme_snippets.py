@@ -234,6 +234,7 @@ LINES: dict[str, dict[str, object]] = {
         "osdkc run --impl construct": SLOW,
         "osdkc run --impl all": Elsewhere("tests/test_runner.py", ('osdkc("run", "--impl", "all",',)),
         "osdkc run --impl c --impl go": SLOW,
+        "osdkc run --impl c-target": Elsewhere("tests/test_on_target.py", ('"run", "--impl", "c-target"',)),
         "osdkc selftest": SLOW,
         "osdkc fuzz --impl all": SLOW,
         "osdkc sim --profile a3-fw3.1": NotRun("runs until stopped"),

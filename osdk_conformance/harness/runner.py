@@ -72,6 +72,14 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
     # the same generated C decoder inside Python: the accelerator `osdkc decode` and the API use
     "accel": [sys.executable, str(TESTEES / "accel_testee.py")],
 }
+# Implementations on a microcontroller, reached over its UART: the generated
+# C library on QEMU's Cortex-M4 (docs/ON-TARGET.md). `--impl c-target` runs
+# it; `all` means the host implementations above (a replay over the
+# emulated UART takes minutes; the kit runs this one on its own).
+TARGET_IMPLS: dict[str, list[str]] = {
+    "c-target": [sys.executable, "-m", "osdk_conformance.target.bridge",
+                 "--qemu", str(TESTEES / "c-target" / "build" / "mps2-an386" / "osdk-c-target.elf")],
+}
 ALL = "all"
 FAILURE_LISTS = ROOT / "conformance" / "failure_lists"
 # What a built implementation needs on disk, and how to get it.
@@ -81,9 +89,10 @@ BUILD_HINT = "run `make setup` (it builds every bundled testee)"
 def impl_argv(name: str) -> list[str]:
     """The command that runs a bundled implementation."""
     try:
-        argv = list(BUNDLED_IMPLS[name])
+        argv = list(BUNDLED_IMPLS[name] if name in BUNDLED_IMPLS else TARGET_IMPLS[name])
     except KeyError:
-        raise UsageError(f"no bundled implementation {name!r} (known: {', '.join(BUNDLED_IMPLS)})") from None
+        raise UsageError(f"no bundled implementation {name!r} "
+                         f"(known: {', '.join([*BUNDLED_IMPLS, *TARGET_IMPLS])})") from None
     for part in argv[1:] if argv[0] in (sys.executable, "node", "java") else argv[:1]:
         if part.startswith("/") and not Path(part).exists():
             why = needs_checkout(f"the bundled implementation {name!r}")
@@ -657,10 +666,15 @@ def run_command(args: argparse.Namespace) -> int:
     _check_writable(args.junit, "--junit")
     _check_writable(args.html, "--html")
     if args.impl and (len(args.impl) > 1 or ALL in args.impl):
-        return run_all(args, [i for i in BUNDLED_IMPLS if ALL in args.impl or i in args.impl])
+        return run_all(args, [i for i in [*BUNDLED_IMPLS, *TARGET_IMPLS]
+                              if (ALL in args.impl and i in BUNDLED_IMPLS) or i in args.impl])
     args.impl = args.impl[0] if args.impl else None
     _check_writable(args.summary_json, "--summary-json")
-    argv = impl_argv(args.impl) if args.impl else args.testee
+    if args.testee_port:
+        argv = [sys.executable, "-m", "osdk_conformance.target.bridge", "--port", args.testee_port,
+                "--baud", str(args.baud)]
+    else:
+        argv = impl_argv(args.impl) if args.impl else args.testee
     if args.failure_list is None and args.impl and default_failure_list(args.impl).exists():
         args.failure_list = str(default_failure_list(args.impl))
     listed = read_failure_list(args.failure_list) if args.failure_list else {}
@@ -767,9 +781,12 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--testee", metavar="COMMAND",
                        help="command that starts the implementation under test (split like a shell does)")
-    which.add_argument("--impl", action="append", choices=[*BUNDLED_IMPLS, ALL], metavar="IMPL",
-                       help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}), or {ALL} for every one; "
+    which.add_argument("--impl", action="append", choices=[*BUNDLED_IMPLS, *TARGET_IMPLS, ALL], metavar="IMPL",
+                       help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}; on an emulated board: "
+                            f"{', '.join(TARGET_IMPLS)}), or {ALL} for every one on this host; "
                             "repeatable: more than one run side by side, reports in --report-dir")
+    which.add_argument("--testee-port", metavar="PORT",
+                       help="a board on this serial port running the on-target testee (docs/ON-TARGET.md)")
     p.add_argument("--profile", action="append", choices=profiles, metavar="PROFILE",
                    help=f"only this profile (repeatable; one of {', '.join(profiles)}); "
                         "cases without a profile always run")
@@ -792,6 +809,8 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     p.add_argument("--report-dir", metavar="DIR", default=str(REPORTS),
                    help="with --impl all: where each implementation's JUnit, HTML, log and summary go, "
                         "and conformance.json (default: reports/)")
+    p.add_argument("--baud", type=positive_int, metavar="B", default=115200,
+                   help="with --testee-port: the port's rate (default 115200)")
     p.add_argument("--jobs", type=positive_int, metavar="N", default=DEFAULT_JOBS,
                    help="with --impl all: implementations run at once (default: the number of CPUs)")
 

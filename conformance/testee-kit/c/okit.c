@@ -5,22 +5,56 @@
 #include "okit.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
+#ifndef OKIT_PORT
+#include <stdlib.h>
+#endif
 
 #include "jsonread.h"
 
 struct okit_request {
     const okit_testee *testee;
-    const jv_t *json;
-    const char *op;
+    jv_t json;
+    char op[64];        /* the op, cut to fit (only for messages past the operation table) */
     int profile;
     bool answered;
     char *result_buf;   /* okit_result's buffer, written out when the callback returns */
     osdk_json_t result;
 };
 
-/* ---- writing answers ------------------------------------------------------------------------- */
+/* ---- memory and the line's two ends: the heap and stdio, or (OKIT_PORT) static buffers and the port ---- */
+
+#ifdef OKIT_PORT
+static char g_line[OKIT_LINE_MAX];
+static char g_answer[OKIT_ANSWER_MAX];
+/* arguments of one request; emptied before the next */
+static uint64_t g_arena[OKIT_ARENA_MAX / sizeof(uint64_t)];
+static size_t g_arena_used;
+
+static void *arg_alloc(size_t n)
+{
+    size_t words = n ? (n + sizeof(uint64_t) - 1) / sizeof(uint64_t) : 1;
+    if (words > sizeof g_arena / sizeof g_arena[0] - g_arena_used) return NULL;
+    g_arena_used += words;
+    return g_arena + (g_arena_used - words);
+}
+
+void okit_free(void *p) { (void)p; }
+static char *answer_alloc(size_t n) { return n <= sizeof g_answer ? g_answer : NULL; }
+static void answer_free(char *p) { (void)p; }
+static void log_line(const char *text) { (void)text; }
+
+static void emit_line(const char *text, size_t n)
+{
+    okit_port_write(text, n);
+    okit_port_write("\n", 1);
+}
+#else
+static void *arg_alloc(size_t n) { return malloc(n ? n : sizeof(uint64_t)); }
+void okit_free(void *p) { free(p); }
+static char *answer_alloc(size_t n) { return malloc(n); }
+static void answer_free(char *p) { free(p); }
+static void log_line(const char *text) { fprintf(stderr, "okit: %s\n", text); }
 
 static void emit_line(const char *text, size_t n)
 {
@@ -28,6 +62,9 @@ static void emit_line(const char *text, size_t n)
     fputc('\n', stdout);
     fflush(stdout);
 }
+#endif
+
+/* ---- writing answers ------------------------------------------------------------------------- */
 
 static void emit_error(const char *error_class, const char *detail)
 {
@@ -53,7 +90,9 @@ static void emit_error(const char *error_class, const char *detail)
 static bool first_answer(okit_request *req)
 {
     if (req->answered) {
-        fprintf(stderr, "okit: a second answer to one %s request was dropped\n", req->op);
+        char text[128];
+        snprintf(text, sizeof text, "a second answer to one %s request was dropped", req->op);
+        log_line(text);
         return false;
     }
     req->answered = true;
@@ -74,7 +113,10 @@ void okit_unsupported(okit_request *req)
 osdk_json_t *okit_result(okit_request *req, size_t room)
 {
     if (!first_answer(req)) return NULL;
-    req->result_buf = malloc(room + 64);
+#ifdef OKIT_PORT
+    if (room + 64 > OKIT_ANSWER_MAX) room = OKIT_ANSWER_MAX - 64; /* what the answer may need, not what it takes */
+#endif
+    req->result_buf = answer_alloc(room + 64);
     if (!req->result_buf) {
         emit_error("internal_error", "out of memory for the answer");
         return NULL;
@@ -99,7 +141,7 @@ static void finish(okit_request *req)
         if (req->result.overflow || req->result.depth != 0) emit_error("internal_error", "the answer does not fit its room");
         else emit_line(req->result_buf, req->result.len);
     }
-    free(req->result_buf);
+    answer_free(req->result_buf);
     req->result_buf = NULL;
 }
 
@@ -115,29 +157,50 @@ static bool bad(okit_request *req, const char *fmt, const char *key)
 
 const char *okit_op_name(const okit_request *req) { return req->op; }
 int okit_profile(const okit_request *req) { return req->profile; }
-bool okit_has(const okit_request *req, const char *key) { return jv_get(req->json, key) != NULL; }
+bool okit_has(const okit_request *req, const char *key)
+{
+    jv_t v;
+    return jv_get(&req->json, key, &v);
+}
+
+static bool missing(okit_request *req, const char *key, jv_t *v)
+{
+    if (jv_get(&req->json, key, v)) return false;
+    bad(req, "missing argument '%s'", key);
+    return true;
+}
+
+static bool no_room(okit_request *req, const char *key)
+{
+    char detail[160];
+    snprintf(detail, sizeof detail, "argument '%s' does not fit in the testee's memory", key);
+    okit_error(req, "internal_error", detail);
+    return false;
+}
 
 bool okit_int(okit_request *req, const char *key, int64_t lo, int64_t hi, int64_t *out)
 {
-    const jv_t *v = jv_get(req->json, key);
-    if (!v) return bad(req, "missing argument '%s'", key);
-    if (v->kind == JV_BOOL) return bad(req, "argument '%s' must not be a boolean", key);
-    if (v->kind != JV_NUMBER || !v->is_int) return bad(req, "argument '%s' has the wrong type", key);
-    if (v->int_overflow || v->i < lo || v->i > hi) return bad(req, "argument '%s' is out of range", key);
-    *out = v->i;
+    jv_t v;
+    int64_t i;
+    bool overflow;
+    if (missing(req, key, &v)) return false;
+    if (v.kind == JV_BOOL) return bad(req, "argument '%s' must not be a boolean", key);
+    if (!jv_integer(&v, &i, &overflow)) return bad(req, "argument '%s' has the wrong type", key);
+    if (overflow || i < lo || i > hi) return bad(req, "argument '%s' is out of range", key);
+    *out = i;
     return true;
 }
 
 bool okit_bool(okit_request *req, const char *key, bool *out)
 {
-    const jv_t *v = jv_get(req->json, key);
-    if (!v) return bad(req, "missing argument '%s'", key);
-    if (v->kind != JV_BOOL) return bad(req, "argument '%s' has the wrong type", key);
-    *out = v->boolean;
+    jv_t v;
+    if (missing(req, key, &v)) return false;
+    if (v.kind != JV_BOOL) return bad(req, "argument '%s' has the wrong type", key);
+    *out = v.p[0] == 't';
     return true;
 }
 
-static int hexval(char c)
+static int hexval(unsigned char c)
 {
     if (c >= '0' && c <= '9') return c - '0';
     if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -147,22 +210,22 @@ static int hexval(char c)
 
 bool okit_hex(okit_request *req, const char *key, uint8_t **out, size_t *len)
 {
-    const jv_t *v = jv_get(req->json, key);
-    size_t i, n;
+    jv_t v;
+    jv_iter_t it;
+    unsigned char hi, lo;
+    size_t n = 0;
     uint8_t *buf;
-    if (!v) return bad(req, "missing argument '%s'", key);
-    if (v->kind != JV_STRING) return bad(req, "argument '%s' has the wrong type", key);
-    if (v->len % 2) return bad(req, "argument '%s' is not a hex string of whole bytes", key);
-    n = v->len / 2;
-    buf = malloc(n ? n : 1);
-    if (!buf) return bad(req, "out of memory reading '%s'", key);
-    for (i = 0; i < n; i++) {
-        int hi = hexval(v->str[2 * i]), lo = hexval(v->str[2 * i + 1]);
-        if (hi < 0 || lo < 0) {
-            free(buf);
+    if (missing(req, key, &v)) return false;
+    if (v.kind != JV_STRING) return bad(req, "argument '%s' has the wrong type", key);
+    /* the text holds at least two characters per byte: its length bounds the bytes */
+    if (!(buf = arg_alloc(v.n / 2))) return no_room(req, key);
+    jv_chars(&v, &it);
+    while (jv_next_byte(&it, &hi)) {
+        if (!jv_next_byte(&it, &lo) || hexval(hi) < 0 || hexval(lo) < 0) {
+            okit_free(buf);
             return bad(req, "argument '%s' is not a hex string of whole bytes", key);
         }
-        buf[i] = (uint8_t)(hi << 4 | lo);
+        buf[n++] = (uint8_t)(hexval(hi) << 4 | hexval(lo));
     }
     *out = buf;
     *len = n;
@@ -171,41 +234,53 @@ bool okit_hex(okit_request *req, const char *key, uint8_t **out, size_t *len)
 
 bool okit_f32(okit_request *req, const char *key, uint32_t *bits)
 {
-    const jv_t *v = jv_get(req->json, key);
-    const jv_t *s;
-    size_t i;
+    jv_t v, s;
+    jv_iter_t it;
+    unsigned char c;
+    size_t digits = 0;
     uint32_t x = 0;
-    if (!v) return bad(req, "missing argument '%s'", key);
-    if (v->kind != JV_OBJECT) return bad(req, "argument '%s' has the wrong type", key);
-    s = jv_get(v, "f32");
-    if (!s || s->kind != JV_STRING || s->len < 3 || s->len > 10 || s->str[0] != '0' || s->str[1] != 'x')
-        return bad(req, "argument '%s' must be {\"f32\": \"0x........\"}", key);
-    for (i = 2; i < s->len; i++) {
-        int h = hexval(s->str[i]);
-        if (h < 0) return bad(req, "argument '%s' must be {\"f32\": \"0x........\"}", key);
-        x = x << 4 | (uint32_t)h;
+    if (missing(req, key, &v)) return false;
+    if (v.kind != JV_OBJECT) return bad(req, "argument '%s' has the wrong type", key);
+    if (!jv_get(&v, "f32", &s) || s.kind != JV_STRING) goto malformed;
+    jv_chars(&s, &it);
+    if (!jv_next_byte(&it, &c) || c != '0' || !jv_next_byte(&it, &c) || c != 'x') goto malformed;
+    while (jv_next_byte(&it, &c)) {
+        if (hexval(c) < 0 || ++digits > 8) goto malformed;
+        x = x << 4 | (uint32_t)hexval(c);
     }
+    if (digits == 0) goto malformed;
     *bits = x;
     return true;
+malformed:
+    return bad(req, "argument '%s' must be {\"f32\": \"0x........\"}", key);
 }
 
 bool okit_sizes(okit_request *req, const char *key, uint64_t **out, size_t *n)
 {
-    const jv_t *v = jv_get(req->json, key);
-    size_t i;
+    jv_t v, item;
+    jv_iter_t it;
+    size_t count, i = 0;
     uint64_t *sizes;
-    if (!v) return bad(req, "missing argument '%s'", key);
-    if (v->kind != JV_ARRAY) return bad(req, "argument '%s' has the wrong type", key);
-    for (i = 0; i < v->count; i++) {
-        const jv_t *c = &v->items[i];
-        if (c->kind != JV_NUMBER || !c->is_int || c->i < 0)
+    if (missing(req, key, &v)) return false;
+    if (v.kind != JV_ARRAY) return bad(req, "argument '%s' has the wrong type", key);
+    jv_items(&v, &it);
+    while (jv_next_item(&it, &item)) {
+        int64_t x;
+        bool overflow;
+        if (!jv_integer(&item, &x, &overflow) || x < 0)
             return bad(req, "argument '%s' must be a list of non-negative integers", key);
     }
-    sizes = malloc(v->count ? v->count * sizeof *sizes : sizeof *sizes);
-    if (!sizes) return bad(req, "out of memory reading '%s'", key);
-    for (i = 0; i < v->count; i++) sizes[i] = (uint64_t)v->items[i].i;
+    count = jv_count(&v);
+    if (!(sizes = arg_alloc(count * sizeof *sizes))) return no_room(req, key);
+    jv_items(&v, &it);
+    while (jv_next_item(&it, &item)) {
+        int64_t x;
+        bool overflow;
+        jv_integer(&item, &x, &overflow);
+        sizes[i++] = (uint64_t)x;
+    }
     *out = sizes;
-    *n = v->count;
+    *n = count;
     return true;
 }
 
@@ -258,52 +333,52 @@ static void capabilities(okit_request *req)
     osdk_json_end_object(w);
 }
 
-static int profile_index(const okit_testee *t, const jv_t *prof)
+static int profile_index(const okit_testee *t, const jv_t *json)
 {
+    jv_t prof;
     int i;
-    if (!prof || prof->kind != JV_STRING || strlen(prof->str) != prof->len) return -1;
+    if (!jv_get(json, "profile", &prof)) return -1;
     for (i = 0; t->profiles && t->profiles[i]; i++)
-        if (strcmp(t->profiles[i], prof->str) == 0) return i;
+        if (jv_string_is(&prof, t->profiles[i])) return i;
     return -1;
 }
 
 static void answer(const okit_testee *t, const char *line, size_t len)
 {
     char err[160];
-    jv_t *json = jv_parse(line, len, err, sizeof err);
-    const jv_t *op;
+    jv_t json, op;
     okit_request req;
     size_t i;
-    if (!json) {
+    if (!jv_parse(line, len, &json, err, sizeof err)) {
         char detail[200];
         snprintf(detail, sizeof detail, "not JSON: %s", err);
         emit_error("bad_request", detail);
         return;
     }
-    op = jv_get(json, "op");
-    if (json->kind != JV_OBJECT || !op || op->kind != JV_STRING) {
+    if (json.kind != JV_OBJECT || !jv_get(&json, "op", &op) || op.kind != JV_STRING) {
         emit_error("bad_request", "a request is a JSON object with an \"op\" string");
-        jv_free(json);
         return;
     }
     memset(&req, 0, sizeof req);
     req.testee = t;
     req.json = json;
-    req.op = op->str;
+    if (!jv_string_copy(&op, req.op, sizeof req.op)) strcpy(req.op, "(a long or odd op)");
     req.profile = -1;
-    if (strcmp(op->str, "capabilities") == 0) {
+#ifdef OKIT_PORT
+    g_arena_used = 0;
+#endif
+    if (jv_string_is(&op, "capabilities")) {
         capabilities(&req);
     } else {
-        for (i = 0; i < OPERATION_COUNT && strcmp(OPERATIONS[i].name, op->str) != 0; i++) {
+        for (i = 0; i < OPERATION_COUNT && !jv_string_is(&op, OPERATIONS[i].name); i++) {
         }
-        if (i < OPERATION_COUNT && OPERATIONS[i].profile) req.profile = profile_index(t, jv_get(json, "profile"));
+        if (i < OPERATION_COUNT && OPERATIONS[i].profile) req.profile = profile_index(t, &json);
         if (i == OPERATION_COUNT || !callback(t, i) || (OPERATIONS[i].profile && req.profile < 0))
             okit_unsupported(&req);
         else
             callback(t, i)(&req);
     }
     finish(&req);
-    jv_free(json);
 }
 
 static bool blank(const char *line, size_t len)
@@ -314,6 +389,30 @@ static bool blank(const char *line, size_t len)
     return true;
 }
 
+#ifdef OKIT_PORT
+int okit_main(const okit_testee *t, int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    for (;;) {
+        size_t len = 0;
+        bool cut = false;
+        int c;
+        while ((c = okit_port_getc()) >= 0 && c != '\n') {
+            if (len < sizeof g_line) g_line[len++] = (char)c;
+            else cut = true;
+        }
+        if (cut) {
+            char detail[96];
+            snprintf(detail, sizeof detail, "a request longer than the testee's %u-byte line", (unsigned)sizeof g_line);
+            emit_error("internal_error", detail);
+        } else if (len > 0 && !blank(g_line, len)) {
+            answer(t, g_line, len);
+        }
+        if (c < 0) return 0;
+    }
+}
+#else
 int okit_main(const okit_testee *t, int argc, char **argv)
 {
     char *line = NULL;
@@ -346,3 +445,4 @@ int okit_main(const okit_testee *t, int argc, char **argv)
     free(line);
     return 0;
 }
+#endif

@@ -19,6 +19,13 @@
  * Files: okit.c, jsonread.c (the request parser), and from generated/c
  * osdk_json.c; libc only (stdio for the loop). README.md walks through
  * wrapping an implementation; example/encode_only.c is the smallest testee.
+ *
+ * Built with -DOKIT_PORT (a microcontroller; conformance/testees/c-target)
+ * the kit uses neither stdio nor the heap: the program provides
+ * okit_port_getc and okit_port_write, a request line holds at most
+ * OKIT_LINE_MAX bytes, one request's hex and chunk arguments together
+ * OKIT_ARENA_MAX, an answer OKIT_ANSWER_MAX (beyond each, the request is
+ * answered `internal_error`), and there is no bench mode.
  */
 #ifndef OKIT_H
 #define OKIT_H
@@ -31,6 +38,22 @@
 
 #ifdef __cplusplus
 extern "C" {
+#endif
+
+#ifdef OKIT_PORT
+#ifndef OKIT_LINE_MAX
+#define OKIT_LINE_MAX 4096
+#endif
+#ifndef OKIT_ARENA_MAX
+#define OKIT_ARENA_MAX 16384
+#endif
+#ifndef OKIT_ANSWER_MAX
+#define OKIT_ANSWER_MAX 32768
+#endif
+/* The next byte of input (blocking), or -1 when input has ended. */
+int okit_port_getc(void);
+/* Write n bytes of an answer; a line ends with "\n". */
+void okit_port_write(const char *text, size_t n);
 #endif
 
 typedef struct okit_request okit_request;
@@ -62,12 +85,15 @@ bool okit_has(const okit_request *req, const char *key);
 /* Arguments. On false the kit has answered `bad_request` (naming the argument): return. */
 bool okit_int(okit_request *req, const char *key, int64_t lo, int64_t hi, int64_t *out);
 bool okit_bool(okit_request *req, const char *key, bool *out);
-/* A hex string of whole bytes, into a malloc'ed buffer (at least 1 byte) the caller frees. */
+/* A hex string of whole bytes, into a buffer (at least 1 byte) the caller releases with okit_free. */
 bool okit_hex(okit_request *req, const char *key, uint8_t **out, size_t *len);
 /* A float given as {"f32": "0x........"}: its IEEE-754 bits, never a rounded value. */
 bool okit_f32(okit_request *req, const char *key, uint32_t *bits);
-/* A list of non-negative integers (decode_stream's "chunks"), malloc'ed (at least 1 element), caller frees. */
+/* A list of non-negative integers (decode_stream's "chunks"), at least 1 element, released with okit_free. */
 bool okit_sizes(okit_request *req, const char *key, uint64_t **out, size_t *n);
+/* Release what okit_hex or okit_sizes gave (free() on the host, where they come from malloc;
+ * nothing with OKIT_PORT, where they last until the next request). NULL is allowed. */
+void okit_free(void *p);
 
 /* ---- the answer (exactly one per request) --------------------------------------------------- */
 

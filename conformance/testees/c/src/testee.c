@@ -12,6 +12,10 @@
  *
  * With arguments (`--bench FILE --profile P`) it runs the bench mode
  * instead: decode_stream's work on a file, counted, not printed.
+ *
+ * The same file is the on-target testee (conformance/testees/c-target):
+ * built with OKIT_PORT the kit reads the board's UART and uses no heap,
+ * and the bench mode, which reads files, is left out.
  */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime for the bench mode */
 #include <errno.h>
@@ -30,8 +34,13 @@
 #include "osdk_model_json.h"
 #include "osdk_tables.h"
 
+#ifndef TESTEE_NAME
 #define TESTEE_NAME "osdk-c-generated"
-#define EVENT_BUF (1u << 20)
+#endif
+/* One event's JSON: a frame of 1023 bytes and its value model take under 8 KiB. */
+#ifndef EVENT_BUF
+#define EVENT_BUF (64u << 10)
+#endif
 
 
 /* ---- answers ------------------------------------------------------------------------------ */
@@ -47,7 +56,7 @@ static void decode_error(okit_request *req, const osdk_error_t *err, const char 
 
 /* ---- shared pieces ------------------------------------------------------------------------ */
 
-static char *g_event_buf;    /* one event's / one model's JSON */
+static char g_event_buf[EVENT_BUF]; /* one event's JSON */
 static osdk_frame_t g_frame; /* large structs live here, not on the stack */
 static osdk_payload_t g_payload;
 
@@ -70,24 +79,24 @@ static void op_decode_payload(okit_request *req)
     osdk_json_t *w;
     if (!okit_hex(req, "hex", &data, &len) || !okit_int(req, "cmd_set", 0, 255, &cmd_set) ||
         !okit_int(req, "cmd_id", 0, 255, &cmd_id) || !okit_bool(req, "is_ack", &is_ack)) {
-        free(data);
+        okit_free(data);
         return;
     }
     if (osdk_payload_decode(data, len, (uint8_t)cmd_set, (uint8_t)cmd_id, is_ack, osdk_profile_enum_values[profile],
                             &g_payload, &err) != OSDK_OK) {
         decode_error(req, &err, "payload");
-        free(data);
+        okit_free(data);
         return;
     }
     if (!(w = okit_result(req, (1u << 20) + 8 * len))) {
-        free(data);
+        okit_free(data);
         return;
     }
     osdk_json_begin_object(w);
     osdk_json_key(w, "value");
     osdk_payload_field_to_json(&g_payload, "body", w);
     osdk_json_end_object(w);
-    free(data);
+    okit_free(data);
 }
 
 static void op_decode_frame(okit_request *req)
@@ -105,23 +114,23 @@ static void op_decode_frame(okit_request *req)
     st = osdk_frame_problem(data, len, detail, sizeof detail);
     if (st != OSDK_OK) {
         okit_error(req, osdk_status_name(st), detail);
-        free(data);
+        okit_free(data);
         return;
     }
     if (osdk_frame_decode(data, len, osdk_profile_enum_values[profile], &g_frame, &err) != OSDK_OK) {
         decode_error(req, &err, "frame");
-        free(data);
+        okit_free(data);
         return;
     }
     if (!(w = okit_result(req, (1u << 20) + 8 * len))) {
-        free(data);
+        okit_free(data);
         return;
     }
     osdk_json_begin_object(w);
     osdk_json_key(w, "frame");
     osdk_frame_to_json(&g_frame, w);
     osdk_json_end_object(w);
-    free(data);
+    okit_free(data);
 }
 
 /* ---- control mode ------------------------------------------------------------------------------------- */
@@ -184,17 +193,17 @@ static void op_check_movement(okit_request *req)
     if (osdk_payload_decode(data, len, 0x01, 0x03, false, osdk_profile_enum_values[profile], &g_payload, &err) !=
         OSDK_OK) {
         decode_error(req, &err, "movement control");
-        free(data);
+        okit_free(data);
         return;
     }
     if (g_payload.body.tag != OSDK_PAYLOAD_BODY_OSDK_MOVEMENT_CONTROL) {
         okit_error(req, "undecodable", "the payload is not a movement control value");
-        free(data);
+        okit_free(data);
         return;
     }
     mc = &g_payload.body.u.osdk_movement_control;
     byte = data[0];
-    free(data);
+    okit_free(data);
     if (osdk_mode_class[profile][byte] != OSDK_MODE_DOCUMENTED) {
         snprintf(detail, sizeof detail, "mode byte 0x%02x is %s on %s", (unsigned)byte,
                  osdk_mode_class_names[osdk_mode_class[profile][byte]], osdk_profile_ids[profile]);
@@ -391,13 +400,13 @@ static void op_decode_stream(okit_request *req)
     osdk_json_t *w;
     if (!okit_hex(req, "hex", &data, &len)) return;
     if (!okit_sizes(req, "chunks", &chunks, &count)) {
-        free(data);
+        okit_free(data);
         return;
     }
     /* room for the events: a few hundred bytes per input byte at worst (one rejection each) */
     if (!(w = okit_result(req, (1u << 20) + 512u * len))) {
-        free(data);
-        free(chunks);
+        okit_free(data);
+        okit_free(chunks);
         return;
     }
     memset(&g_stream, 0, sizeof g_stream);
@@ -419,11 +428,12 @@ static void op_decode_stream(okit_request *req)
     osdk_deframer_finish(&d, on_event, &g_stream);
     osdk_json_end_array(w);
     osdk_json_end_object(w);
-    free(data);
-    free(chunks);
+    okit_free(data);
+    okit_free(chunks);
 }
 
 /* ---- bench mode (conformance/PROTOCOL.md, "Bench mode") --------------------------------------------------- */
+#ifndef OKIT_PORT
 
 #define BENCH_READ (64u * 1024u)
 #define BENCH_USAGE "usage: --bench FILE|- --profile P"
@@ -526,6 +536,7 @@ static int bench_main(int argc, char **argv)
            (unsigned long long)b.errors, (unsigned long long)b.garbage_bytes, seconds);
     return fflush(stdout) == 0 ? 0 : 2;
 }
+#endif
 
 /* ---- encoders ------------------------------------------------------------------------------------------- */
 
@@ -564,22 +575,22 @@ static void op_encode_frame(okit_request *req)
     osdk_encode_status_t st;
     if (!okit_bool(req, "is_ack", &is_ack) || !okit_int(req, "session", 0, 31, &session) ||
         !okit_int(req, "seq", 0, 0xFFFF, &seq) || !okit_hex(req, "value", &value, &vlen)) {
-        free(value);
+        okit_free(value);
         return;
     }
     if (is_ack) {
         if (okit_has(req, "cmd_set") || okit_has(req, "cmd_id")) {
-            free(value);
+            okit_free(value);
             okit_error(req, "bad_request", "an ACK frame has no cmd_set or cmd_id");
             return;
         }
     } else if (!okit_int(req, "cmd_set", 0, 255, &cmd_set) || !okit_int(req, "cmd_id", 0, 255, &cmd_id)) {
-        free(value);
+        okit_free(value);
         return;
     }
     st = osdk_encode_frame((uint8_t)cmd_set, (uint8_t)cmd_id, is_ack, (uint8_t)session, (uint16_t)seq, value, vlen,
                            frame, sizeof frame, &written);
-    free(value);
+    okit_free(value);
     if (st == OSDK_ENCODE_OK) {
         hex_result(req, frame, written);
     } else if (st == OSDK_ENCODE_IMPOSSIBLE_LENGTH) {
@@ -609,11 +620,10 @@ int main(int argc, char **argv)
     t.check_movement_control = op_check_movement;
     t.encode_movement_control = op_encode_movement;
     t.encode_frame = op_encode_frame;
+#ifndef OKIT_PORT
     t.bench = bench_main;
-    g_event_buf = malloc(EVENT_BUF);
-    if (!g_event_buf) return 1;
+#endif
     status = okit_main(&t, argc, argv);
-    free(g_event_buf);
     return status;
 }
 
