@@ -4,8 +4,9 @@
  * Shaped for the proof (docs/VERIFICATION.md): no libc call (copies and
  * scans are loops over bytes, structs are zeroed by assignment), the
  * detail formatter takes its arguments as plain parameters, and every
- * state change happens in next_event(), which the proof covers; the three
- * functions that hand events to the caller's callback only loop over it. */
+ * state change happens in next_event(); the three functions that hand
+ * events to the caller's callback only loop over it, and are proved with
+ * the callback's model (osdk_event_model in the header). */
 #include "osdk_deframer.h"
 
 #include "osdk_crc.h"
@@ -238,7 +239,8 @@ static void garbage(osdk_deframer_t *d, osdk_event_t *ev)
     requires \valid(ev) && \separated(ev, d, d->buf + (0 .. d->cap - 1));
     assigns *ev, d->start, d->fill, d->base, d->pending, d->in_garbage, d->garbage_start, d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1];
     ensures osdk_deframer_ok(d);
-    ensures d->pending <= d->fill; */
+    ensures d->pending <= d->fill;
+    ensures !\result ==> d->pending == 0; */
 /* (That a frame event's raw[0 .. length) is readable is proved as an
  * assertion where the frame is reported: as a postcondition over every
  * return, the provers ran out of time.) */
@@ -359,17 +361,35 @@ static size_t take(osdk_deframer_t *d, const uint8_t *restrict data, size_t len)
     return k;
 }
 
-/* The callers of the callback: not proved (WP cannot follow a call through a
- * function pointer it does not know); they hold no buffer access. */
+/* Every event the window holds, to the callback. (No loop variant: that
+ * each event consumes input is next_event's, and not stated in its
+ * contract.) */
+/*@ requires osdk_deframer_ok(d) && d->buf != \null && d->pending == 0;
+    requires fn == &osdk_event_model;
+    assigns d->start, d->fill, d->base, d->pending, d->in_garbage, d->garbage_start,
+            d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1];
+    ensures osdk_deframer_ok(d) && d->pending == 0; */
 static void scan(osdk_deframer_t *d, bool final, osdk_event_fn fn, void *user)
 {
     osdk_event_t ev;
-    while (next_event(d, final, &ev)) fn(user, &ev);
+    /*@ loop invariant osdk_deframer_ok(d) && d->pending <= d->fill;
+        loop assigns ev, d->start, d->fill, d->base, d->pending, d->in_garbage, d->garbage_start,
+                     d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1]; */
+    while (next_event(d, final, &ev)) {
+        /*@ calls osdk_event_model; */
+        fn(user, &ev);
+    }
 }
 
 void osdk_deframer_feed(osdk_deframer_t *d, const uint8_t *data, size_t len, osdk_event_fn fn, void *user)
 {
     if (d->buf == NULL) return;
+    /*@ loop invariant osdk_deframer_ok(d) && d->buf != \null && d->pending == 0;
+        loop invariant len == 0 || \valid_read(data + (0 .. len - 1));
+        loop invariant len == 0 || \separated(data + (0 .. len - 1), d->buf + (0 .. d->cap - 1));
+        loop assigns data, len, d->buf[0 .. d->cap - 1], d->start, d->fill, d->base, d->pending, d->in_garbage,
+                     d->garbage_start, d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1];
+        loop variant len; */
     while (len > 0) {
         /* room runs out only if the scan waited on more than one maximum-length
          * frame, which the buffer holds: cannot happen */

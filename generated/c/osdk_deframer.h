@@ -81,11 +81,34 @@ typedef struct {
     assigns *d;
     ensures osdk_deframer_ok(d) && d->pending == 0; */
 bool osdk_deframer_init(osdk_deframer_t *d, uint8_t *buf, size_t cap);
+#ifdef __FRAMAC__
+/* What the proof assumes of the caller's event callback (docs/VERIFICATION.md):
+ * it reads the event and writes nothing the deframer owns. The contracts
+ * below name this model as fn; it is declared for Frama-C only, and no
+ * program defines it. */
+/*@ requires \valid_read(ev);
+    assigns \nothing; */
+void osdk_event_model(void *user, const osdk_event_t *ev);
+#endif
+
 /* Feed any number of bytes; fn is called for every event they complete.
  * data must not lie in the deframer's own buffer, and fn must not call
- * back into the same deframer. */
+ * back into the same deframer (d->pending is 0 between calls, never
+ * during a callback). */
+/*@ requires osdk_deframer_ok(d) && d->pending == 0;
+    requires len == 0 || \valid_read(data + (0 .. len - 1));
+    requires d->buf == \null || len == 0 || \separated(data + (0 .. len - 1), d->buf + (0 .. d->cap - 1));
+    requires fn == &osdk_event_model;
+    assigns d->buf[0 .. d->cap - 1], d->start, d->fill, d->base, d->pending, d->in_garbage, d->garbage_start,
+            d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1];
+    ensures osdk_deframer_ok(d) && d->pending == 0; */
 void osdk_deframer_feed(osdk_deframer_t *d, const uint8_t *data, size_t len, osdk_event_fn fn, void *user);
 /* The input has ended: report what is left. */
+/*@ requires osdk_deframer_ok(d) && d->pending == 0;
+    requires fn == &osdk_event_model;
+    assigns d->start, d->fill, d->base, d->pending, d->in_garbage, d->garbage_start,
+            d->detail[0 .. OSDK_DEFRAMER_DETAIL_LEN - 1];
+    ensures osdk_deframer_ok(d) && d->pending == 0; */
 void osdk_deframer_finish(osdk_deframer_t *d, osdk_event_fn fn, void *user);
 
 /* The first thing wrong with a 12-byte header, in the receiver's order,
