@@ -1,5 +1,5 @@
 """The generated C library on a Cortex-M, answering the runner over a UART
-(conformance/testees/c-target, osdk_conformance/target/bridge.py,
+(conformance/testees/c-target, osdk_conformance/board/bridge.py,
 docs/ON-TARGET.md).
 
 The firmware is built by `make setup` with Debian's arm-none-eabi-gcc and
@@ -84,7 +84,7 @@ def bridges_on(port: str) -> bool:
             cmd = (Path("/proc") / pid / "cmdline").read_bytes().split(b"\0")
         except OSError:
             continue
-        if b"osdk_conformance.target.bridge" in cmd and port.encode() in cmd:
+        if b"osdk_conformance.board.bridge" in cmd and port.encode() in cmd:
             return True
     return False
 
@@ -174,7 +174,7 @@ def test_ctrl_c_stops_a_run_on_the_emulated_board_and_leaves_no_qemu():
 
 
 def test_the_bridge_says_what_is_missing(tmp_path):
-    r = subprocess.run([sys.executable, "-m", "osdk_conformance.target.bridge", "--qemu", str(tmp_path / "no.elf")],
+    r = subprocess.run([sys.executable, "-m", "osdk_conformance.board.bridge", "--qemu", str(tmp_path / "no.elf")],
                        input="", capture_output=True, text=True, timeout=30)
     assert r.returncode != 0 and "no firmware at" in r.stderr and "Traceback" not in r.stderr
     r = subprocess.run([*OSDKC, "run", "--testee-port", str(tmp_path / "ttyNONE"), "--filter", "encode"],
@@ -190,7 +190,7 @@ def test_the_boards_limits_answer_internal_error_and_the_board_goes_on():
              "[" * 300 + "]" * 300,
              "not json",
              '{"op": "capabilities"}']
-    r = subprocess.run([sys.executable, "-m", "osdk_conformance.target.bridge", "--qemu", str(MPS2_ELF)],
+    r = subprocess.run([sys.executable, "-m", "osdk_conformance.board.bridge", "--qemu", str(MPS2_ELF)],
                        input="\n".join(lines) + "\n", capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr
     answers = [json.loads(line) for line in r.stdout.splitlines()]

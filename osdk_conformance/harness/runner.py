@@ -77,7 +77,7 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
 # it; `all` means the host implementations above (a replay over the
 # emulated UART takes minutes; the kit runs this one on its own).
 TARGET_IMPLS: dict[str, list[str]] = {
-    "c-target": [sys.executable, "-m", "osdk_conformance.target.bridge",
+    "c-target": [sys.executable, "-m", "osdk_conformance.board.bridge",
                  "--qemu", str(TESTEES / "c-target" / "build" / "mps2-an386" / "osdk-c-target.elf")],
 }
 ALL = "all"
@@ -671,7 +671,7 @@ def run_command(args: argparse.Namespace) -> int:
     args.impl = args.impl[0] if args.impl else None
     _check_writable(args.summary_json, "--summary-json")
     if args.testee_port:
-        argv = [sys.executable, "-m", "osdk_conformance.target.bridge", "--port", args.testee_port,
+        argv = [sys.executable, "-m", "osdk_conformance.board.bridge", "--port", args.testee_port,
                 "--baud", str(args.baud)]
     else:
         argv = impl_argv(args.impl) if args.impl else args.testee

@@ -3,7 +3,7 @@
  * the only memory newlib may take.
  *
  * Lines that start with '#' are the board's own (the start line, a fault)
- * and never answers: the bridge (osdk_conformance/target) reads them.
+ * and never answers: the bridge (osdk_conformance/board) reads them.
  */
 #include <errno.h>
 #include <stdint.h>

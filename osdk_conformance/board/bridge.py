@@ -153,7 +153,7 @@ class Board:
 
 
 def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(prog="python -m osdk_conformance.target.bridge",
+    ap = argparse.ArgumentParser(prog="python -m osdk_conformance.board.bridge",
                                  description="A testee on a board's UART (docs/ON-TARGET.md).")
     where = ap.add_mutually_exclusive_group(required=True)
     where.add_argument("--qemu", metavar="ELF", type=Path, help="run this firmware in qemu-system-arm")
