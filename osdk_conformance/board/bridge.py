@@ -85,7 +85,11 @@ class Board:
             raise SystemExit(f"c-target: cannot open QEMU's serial port {m[1].decode()}: {one_line(e)}") from None
         board = cls(ser, qemu)
         qemu.stdin.write(b"cont\n")
-        line = board.line(deadline)
+        try:
+            line = board.line(deadline)
+        except BoardGone as e:
+            board.close()   # the caller has no board to close yet
+            raise SystemExit(f"c-target: the firmware did not start: {e}") from None
         if not line.startswith(b"#start"):
             board.close()
             raise SystemExit(f"c-target: the firmware did not start (first line {line[:80]!r})")

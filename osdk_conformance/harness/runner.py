@@ -76,10 +76,11 @@ BUNDLED_IMPLS: dict[str, list[str]] = {
 # C library on QEMU's Cortex-M4 (docs/ON-TARGET.md). `--impl c-target` runs
 # it; `all` means the host implementations above (a replay over the
 # emulated UART takes minutes; the kit runs this one on its own).
+BRIDGE = [sys.executable, "-m", "osdk_conformance.board.bridge"]   # a testee on a board's UART
 TARGET_IMPLS: dict[str, list[str]] = {
-    "c-target": [sys.executable, "-m", "osdk_conformance.board.bridge",
-                 "--qemu", str(TESTEES / "c-target" / "build" / "mps2-an386" / "osdk-c-target.elf")],
+    "c-target": [*BRIDGE, "--qemu", str(TESTEES / "c-target" / "build" / "mps2-an386" / "osdk-c-target.elf")],
 }
+KNOWN_IMPLS = {**BUNDLED_IMPLS, **TARGET_IMPLS}
 ALL = "all"
 FAILURE_LISTS = ROOT / "conformance" / "failure_lists"
 # What a built implementation needs on disk, and how to get it.
@@ -89,10 +90,9 @@ BUILD_HINT = "run `make setup` (it builds every bundled testee)"
 def impl_argv(name: str) -> list[str]:
     """The command that runs a bundled implementation."""
     try:
-        argv = list(BUNDLED_IMPLS[name] if name in BUNDLED_IMPLS else TARGET_IMPLS[name])
+        argv = list(KNOWN_IMPLS[name])
     except KeyError:
-        raise UsageError(f"no bundled implementation {name!r} "
-                         f"(known: {', '.join([*BUNDLED_IMPLS, *TARGET_IMPLS])})") from None
+        raise UsageError(f"no bundled implementation {name!r} (known: {', '.join(KNOWN_IMPLS)})") from None
     for part in argv[1:] if argv[0] in (sys.executable, "node", "java") else argv[:1]:
         if part.startswith("/") and not Path(part).exists():
             why = needs_checkout(f"the bundled implementation {name!r}")
@@ -666,13 +666,11 @@ def run_command(args: argparse.Namespace) -> int:
     _check_writable(args.junit, "--junit")
     _check_writable(args.html, "--html")
     if args.impl and (len(args.impl) > 1 or ALL in args.impl):
-        return run_all(args, [i for i in [*BUNDLED_IMPLS, *TARGET_IMPLS]
-                              if (ALL in args.impl and i in BUNDLED_IMPLS) or i in args.impl])
+        return run_all(args, [i for i in KNOWN_IMPLS if (ALL in args.impl and i in BUNDLED_IMPLS) or i in args.impl])
     args.impl = args.impl[0] if args.impl else None
     _check_writable(args.summary_json, "--summary-json")
     if args.testee_port:
-        argv = [sys.executable, "-m", "osdk_conformance.board.bridge", "--port", args.testee_port,
-                "--baud", str(args.baud)]
+        argv = [*BRIDGE, "--port", args.testee_port, "--baud", str(args.baud)]
     else:
         argv = impl_argv(args.impl) if args.impl else args.testee
     if args.failure_list is None and args.impl and default_failure_list(args.impl).exists():
@@ -781,7 +779,7 @@ def add_arguments(p: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--testee", metavar="COMMAND",
                        help="command that starts the implementation under test (split like a shell does)")
-    which.add_argument("--impl", action="append", choices=[*BUNDLED_IMPLS, *TARGET_IMPLS, ALL], metavar="IMPL",
+    which.add_argument("--impl", action="append", choices=[*KNOWN_IMPLS, ALL], metavar="IMPL",
                        help=f"a bundled implementation ({', '.join(BUNDLED_IMPLS)}; on an emulated board: "
                             f"{', '.join(TARGET_IMPLS)}), or {ALL} for every one on this host; "
                             "repeatable: more than one run side by side, reports in --report-dir")

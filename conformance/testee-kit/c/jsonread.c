@@ -321,17 +321,6 @@ bool jv_next_item(jv_iter_t *it, jv_t *item)
     return true;
 }
 
-size_t jv_count(const jv_t *arr)
-{
-    jv_iter_t it;
-    jv_t item;
-    size_t n = 0;
-    if (arr->kind != JV_ARRAY) return 0;
-    jv_items(arr, &it);
-    while (jv_next_item(&it, &item)) n++;
-    return n;
-}
-
 void jv_chars(const jv_t *str, jv_iter_t *it)
 {
     it->p = str->p + 1;

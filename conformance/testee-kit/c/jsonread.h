@@ -50,7 +50,6 @@ bool jv_integer(const jv_t *v, int64_t *i, bool *overflow);
 /* Arrays: jv_items, then jv_next_item until it returns false. */
 void jv_items(const jv_t *arr, jv_iter_t *it);
 bool jv_next_item(jv_iter_t *it, jv_t *item);
-size_t jv_count(const jv_t *arr);
 
 /* Strings: jv_chars, then jv_next_byte until it returns false. */
 void jv_chars(const jv_t *str, jv_iter_t *it);

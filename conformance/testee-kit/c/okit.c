@@ -40,7 +40,12 @@ static void *arg_alloc(size_t n)
 }
 
 void okit_free(void *p) { (void)p; }
-static char *answer_alloc(size_t n) { return n <= sizeof g_answer ? g_answer : NULL; }
+/* the answer's buffer: what it may need, up to what the board has */
+static char *answer_alloc(size_t *cap)
+{
+    if (*cap > sizeof g_answer) *cap = sizeof g_answer;
+    return g_answer;
+}
 static void answer_free(char *p) { (void)p; }
 static void log_line(const char *text) { (void)text; }
 
@@ -52,7 +57,7 @@ static void emit_line(const char *text, size_t n)
 #else
 static void *arg_alloc(size_t n) { return malloc(n ? n : sizeof(uint64_t)); }
 void okit_free(void *p) { free(p); }
-static char *answer_alloc(size_t n) { return malloc(n); }
+static char *answer_alloc(size_t *cap) { return malloc(*cap); }
 static void answer_free(char *p) { free(p); }
 static void log_line(const char *text) { fprintf(stderr, "okit: %s\n", text); }
 
@@ -112,16 +117,14 @@ void okit_unsupported(okit_request *req)
 
 osdk_json_t *okit_result(okit_request *req, size_t room)
 {
+    size_t cap = room + 64;
     if (!first_answer(req)) return NULL;
-#ifdef OKIT_PORT
-    if (room + 64 > OKIT_ANSWER_MAX) room = OKIT_ANSWER_MAX - 64; /* what the answer may need, not what it takes */
-#endif
-    req->result_buf = answer_alloc(room + 64);
+    req->result_buf = answer_alloc(&cap);
     if (!req->result_buf) {
         emit_error("internal_error", "out of memory for the answer");
         return NULL;
     }
-    osdk_json_init(&req->result, req->result_buf, room + 64);
+    osdk_json_init(&req->result, req->result_buf, cap);
     osdk_json_begin_object(&req->result);
     osdk_json_key(&req->result, "ok");
     osdk_json_bool(&req->result, true);
@@ -259,7 +262,7 @@ bool okit_sizes(okit_request *req, const char *key, uint64_t **out, size_t *n)
 {
     jv_t v, item;
     jv_iter_t it;
-    size_t count, i = 0;
+    size_t count = 0, i = 0;
     uint64_t *sizes;
     if (missing(req, key, &v)) return false;
     if (v.kind != JV_ARRAY) return bad(req, "argument '%s' has the wrong type", key);
@@ -269,8 +272,8 @@ bool okit_sizes(okit_request *req, const char *key, uint64_t **out, size_t *n)
         bool overflow;
         if (!jv_integer(&item, &x, &overflow) || x < 0)
             return bad(req, "argument '%s' must be a list of non-negative integers", key);
+        count++;
     }
-    count = jv_count(&v);
     if (!(sizes = arg_alloc(count * sizeof *sizes))) return no_room(req, key);
     jv_items(&v, &it);
     while (jv_next_item(&it, &item)) {

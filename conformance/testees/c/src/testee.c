@@ -608,7 +608,7 @@ int main(int argc, char **argv)
 {
     static const char *profiles[OSDK_PROFILE_COUNT + 1]; /* okit_profile() is then the generated profile index */
     okit_testee t;
-    int i, status;
+    int i;
     for (i = 0; i < OSDK_PROFILE_COUNT; i++) profiles[i] = osdk_profile_ids[i];
     memset(&t, 0, sizeof t);
     t.name = TESTEE_NAME;
@@ -623,8 +623,7 @@ int main(int argc, char **argv)
 #ifndef OKIT_PORT
     t.bench = bench_main;
 #endif
-    status = okit_main(&t, argc, argv);
-    return status;
+    return okit_main(&t, argc, argv);
 }
 
 /* Sanitizer builds: a finding aborts the process (the runner reports a
