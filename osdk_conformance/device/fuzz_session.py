@@ -230,6 +230,7 @@ class FuzzSession:
         source: Iterator[FuzzCase] = all_cases(self.opts.profile, self.opts.seed, self.opts.allow_motion, kinds,
                                                self.out.withheld)
         n, bytes_before = 0, self.port.bytes
+        unrated: list[FuzzCase] = []   # the cases sent since a check last judged the broadcast rate
         for case in source:
             if self.opts.max_cases is not None and n >= self.opts.max_cases:
                 break
@@ -248,12 +249,24 @@ class FuzzSession:
             self.out.retried_checks += check.retried
             self.out.bytes_sent = self.port.bytes - bytes_before
             self.live_now = check.ok
+            unrated = [] if self.live.rate_judged(check) else (unrated + [case])[-32:]
             if check.ok:
                 self.recent = []
                 self.since_ok = time.time()
                 continue
             if not self._on_failure(check):
                 return
+        if unrated and self.live_now:
+            # the budget ran out within a rate window of the session's start (or of its last rate change):
+            # the last cases' rate is judged once that window is full, or the report would claim a check it
+            # never made
+            self.live.fill_rate_window()
+            self.recent = unrated
+            check = self.live.check(f"{unrated[-1].id}, a full rate window later")
+            self.out.checks += 1
+            self.out.retried_checks += check.retried
+            if not check.ok:
+                self._on_failure(check)
 
     def _send_case(self, case: FuzzCase) -> None:
         resets_rates = sets_frequency(case)

@@ -112,6 +112,12 @@ class Liveness:
         while (left := self.window_start + self.opts.rate_window - time.time()) > 0:
             time.sleep(min(left, 0.1))
 
+    def rate_judged(self, c: Check) -> bool:
+        """Whether check `c` judged the broadcast rate, or had none to judge."""
+        with self.an.lock:
+            expected = max(self.an.epochs[-1].rates.values(), default=0)
+        return not expected or "rate_hz" in c.details or "broadcast_stopped" in c.symptoms
+
     def pad(self, comment: str, n: int | None = None) -> None:
         """Zero bytes (never a start byte) enough to finish any frame the
         device may be waiting for: what the analyzer's own copy of its
