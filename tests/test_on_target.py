@@ -197,3 +197,53 @@ def test_the_boards_limits_answer_internal_error_and_the_board_goes_on():
     assert [a.get("error") for a in answers] == ["internal_error", "internal_error", "bad_request", "bad_request", None]
     assert "4096-byte line" in answers[0]["detail"] and "nested too deeply" in answers[2]["detail"]
     assert answers[-1]["ok"] and answers[-1]["result"]["name"] == "osdk-c-target"
+
+
+# ---- footprint and instructions per frame on the board (osdkc bench --only footprint) ----------
+
+@pytest.fixture(scope="module")
+def board_footprint():
+    from osdk_conformance.bench import board_footprint
+    return board_footprint.measure(seconds=5.0)
+
+
+def test_the_linked_programs_grow_with_each_feature_and_the_stack_bound_holds(board_footprint):
+    b = board_footprint
+    assert b["ok"], b.get("error")
+    rows = b["features"]
+    assert [r["feature"] for r in rows] == [0, 1, 2, 3]
+    flash = [r["flash"] for r in rows]
+    assert flash == sorted(flash) and len(set(flash)) == 4
+    receive = rows[1]
+    # the deframer keeps one maximum-length frame (LEN is 10 bits) and its detail sentence
+    assert receive["static_ram"] >= 1023 + 160
+    assert receive["ram"] == receive["static_ram"] + receive["stack"]["bytes"]
+    assert receive["stack"]["path"][:3] == ["reset_handler", "main", "osdk_deframer_feed"]
+    assert "osdk_frame_decode" in rows[2]["stack"]["path"]   # through the callback the deframer calls
+    assert rows[3]["entries"]["osdk_encode_frame"] > 0
+    goals = b["goals"]
+    assert goals["flash"]["measured"] == receive["flash"] and goals["ram"]["measured"] == receive["ram"]
+    c = b["cycles"]
+    for mode in ("receive", "decode"):
+        m = c["modes"][mode]
+        assert m["instructions_per_tick"] == 40.0   # 25 MHz SysTick, one instruction per virtual ns
+        assert 0 < m["stack_used"] <= c["stack_bound"]
+        assert m["most_per_frame"] >= m["instructions_per_frame"] > 0
+    assert c["modes"]["decode"]["instructions_per_frame"] > c["modes"]["receive"]["instructions_per_frame"]
+    text = "\n".join(__import__("osdk_conformance.bench.board_footprint", fromlist=["x"]).markdown(b))
+    assert "| 1: receive" in text and ("MISSED" in text or "met" in text)
+
+
+def test_a_call_through_a_pointer_with_nothing_to_bound_it_fails_the_section(tmp_path):
+    from osdk_conformance.bench import board_footprint
+    elf = board_footprint.build() / "footprint-1.elf"
+    with pytest.raises(board_footprint.BoardError, match="calls through a pointer"):
+        board_footprint.call_graph(elf, {}, callbacks=("no_such_callback",))
+
+
+def test_the_stack_paint_catches_a_bound_that_misses_a_path(monkeypatch, board_footprint):
+    from osdk_conformance.bench import board_footprint as bf
+    real = bf.deepest
+    monkeypatch.setattr(bf, "deepest", lambda funcs, entry: {**real(funcs, entry), "bytes": 16})
+    out = bf.measure(seconds=1.0)
+    assert not out["ok"] and "more than the bound of 16" in out["error"]

@@ -237,7 +237,8 @@ def run_bench(args: argparse.Namespace) -> int:
         result["tap"] = bench_tap.measure(args.tap_runs, _log, args.busy_per_core)
         result["tap"]["command"] = command_line(args)
     if "footprint" in sections:
-        _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only")
+        _log("footprint: generated/c on x86-64 (gcc -Os) and Cortex-M4 (clang-14 -Os), compile only; linked for "
+             f"{bench_footprint.board_footprint.BOARD} and run in QEMU")
         result["footprint"] = bench_footprint.measure()
     result["total_seconds"] = round(time.monotonic() - t0, 1)
     result["machine"]["load_average_at_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())

@@ -27,7 +27,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from osdk_conformance.bench import report
+from osdk_conformance.bench import board_footprint, report
 from osdk_conformance.core.paths import ROOT
 
 LIB = ROOT / "generated" / "c"
@@ -242,7 +242,8 @@ def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
     return out
 
 
-def measure(targets: tuple[str, ...] = tuple(TARGETS), lib: Path = LIB) -> dict:
+def measure(targets: tuple[str, ...] = tuple(TARGETS), lib: Path = LIB, board: bool = True) -> dict:
+    """The objects per target; with `board`, the programs linked for a board too (board_footprint.py)."""
     try:
         info = json.loads((lib / "features.json").read_text(encoding="utf-8"))
     except (OSError, ValueError) as e:
@@ -253,7 +254,9 @@ def measure(targets: tuple[str, ...] = tuple(TARGETS), lib: Path = LIB) -> dict:
             result["targets"][name] = measure_target(name, info, lib)
         except FootprintError as e:
             result["targets"][name] = {"ok": False, "error": str(e)}
-    result["ok"] = all(t["ok"] for t in result["targets"].values())
+    if board:
+        result["board"] = board_footprint.measure()
+    result["ok"] = all(t["ok"] for t in result["targets"].values()) and result.get("board", {"ok": True})["ok"]
     return result
 
 
@@ -298,6 +301,8 @@ def terminal(fp: dict) -> str:
         _, stack = _stack_rows(fp)
         deepest = sorted(stack, key=lambda r: -int(r[2]) if r[2].isdigit() else 0)[:5]
         lines += ["  deepest stacks: " + "; ".join(f"{r[0]} {', '.join(r[2:-1])}" for r in deepest)]
+    if "board" in fp:
+        lines += board_footprint.terminal(fp["board"])
     return "\n".join(lines)
 
 
@@ -323,6 +328,8 @@ def markdown(fp: dict, command: str) -> str:
         lines += ["", "Deepest stack per public function, in bytes (callbacks and libc functions not included; "
                       "on x86-64 a frame includes the return address the call pushed):", ""]
         lines += _md(header, [[f"`{r[0]}`", f"`{r[1]}`", *r[2:]] for r in rows], range(2, len(header) - 1))
+    if "board" in fp:
+        lines += board_footprint.markdown(fp["board"])
     return "\n".join(lines + ["", END])
 
 
