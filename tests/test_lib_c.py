@@ -207,11 +207,11 @@ def test_footprint_x86_64(tmp_path):
 
 
 def test_footprint_fails_on_recursion():
-    from osdk_conformance.bench import footprint
+    from osdk_conformance.bench import stack_depth
     funcs = {("a.c", "f"): {"frame": 16, "bounded": True, "calls": [("a.c", "g")]},
              ("a.c", "g"): {"frame": 8, "bounded": True, "calls": [("a.c", "f")]}}
-    with pytest.raises(footprint.FootprintError, match="recursion.*f -> g -> f"):
-        footprint._depths(funcs, [("a.c", "f")])
+    with pytest.raises(stack_depth.StackBoundError, match="recursion.*f -> g -> f"):
+        stack_depth.deepest_paths(funcs, [("a.c", "f")])
     funcs = {("a.c", "f"): {"frame": 16, "bounded": False, "calls": []}}
-    with pytest.raises(footprint.FootprintError, match="unbounded"):
-        footprint._depths(funcs, [("a.c", "f")])
+    with pytest.raises(stack_depth.StackBoundError, match="unbounded"):
+        stack_depth.deepest_paths(funcs, [("a.c", "f")])

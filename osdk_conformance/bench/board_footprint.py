@@ -37,6 +37,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from osdk_conformance.bench import corpus as bench_corpus
+from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths
 from osdk_conformance.core.paths import ROOT
 
 C_TARGET = ROOT / "conformance" / "testees" / "c-target"
@@ -217,14 +219,13 @@ def call_graph(elf: Path, su: dict[str, tuple[int, bool]], callbacks: tuple[str,
 
 def deepest(funcs: dict, entry: str) -> dict:
     """The deepest stack from `entry`: bytes and the path that takes them."""
-    from osdk_conformance.bench.footprint import FootprintError, _depths
     if entry not in funcs:
         raise BoardError(f"the program has no function {entry}")
     keyed = {("", n): {"frame": f["frame"], "bounded": f["bounded"], "calls": [("", c) for c in f["calls"]]}
              for n, f in funcs.items()}
     try:
-        d = _depths(keyed, [("", entry)])[entry]
-    except FootprintError as e:
+        d = deepest_paths(keyed, [("", entry)])[entry]
+    except StackBoundError as e:
         raise BoardError(str(e)) from None
     return {"bytes": d["bytes"], "path": d["path"]}
 
@@ -295,7 +296,6 @@ def measure(board: str = BOARD, seconds: float = CYCLES_SECONDS) -> dict:
 
 
 def _measure(board: str, seconds: float) -> dict:
-    from osdk_conformance.bench import corpus as bench_corpus
     out_dir = build(board)
     features = []
     for n, label in FEATURES:

@@ -28,6 +28,7 @@ import tempfile
 from pathlib import Path
 
 from osdk_conformance.bench import board_footprint, report
+from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths
 from osdk_conformance.core.paths import ROOT
 
 LIB = ROOT / "generated" / "c"
@@ -149,37 +150,6 @@ def _frames(su: Path) -> dict[str, tuple[int, bool]]:
     return out
 
 
-def _depths(funcs: dict, entries: list[tuple[str, str]]) -> dict[str, dict]:
-    """funcs: (file, name) -> {"frame", "bounded", "calls": [(file, name)]}."""
-    memo: dict = {}
-    stack: list = []
-
-    def depth(key) -> tuple[int, list[str]]:
-        if key in memo:
-            return memo[key]
-        if key in stack:
-            cycle = [k[1] for k in stack[stack.index(key):]] + [key[1]]
-            raise FootprintError("recursion, so no stack bound: " + " -> ".join(cycle))
-        f = funcs[key]
-        if not f["bounded"]:
-            raise FootprintError(f"{key[1]} ({key[0]}) has a frame of unbounded size")
-        stack.append(key)
-        best = (0, [])
-        for callee in f["calls"]:
-            d = depth(callee)
-            if d[0] > best[0]:
-                best = d
-        stack.pop()
-        memo[key] = (f["frame"] + best[0], [key[1]] + best[1])
-        return memo[key]
-
-    out = {}
-    for key in entries:
-        d, path = depth(key)
-        out[key[1]] = {"file": key[0], "bytes": d, "path": path}
-    return out
-
-
 def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
     t = TARGETS[name]
     readelf = shutil.which("readelf") or shutil.which("llvm-readelf-14")
@@ -228,8 +198,8 @@ def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
             if any(r == fn for r in f["calls"]):
                 raise FootprintError(f"{fn} calls itself")
         try:
-            out["stack"] = _depths(funcs, entries)
-        except FootprintError as e:
+            out["stack"] = deepest_paths(funcs, entries)
+        except StackBoundError as e:
             return {**out, "ok": False, "error": str(e)}
 
     def total(files) -> dict[str, int]:
