@@ -17,9 +17,11 @@ Sections (`--only`, default all, in this order):
   beside what the line could carry of the bytes a case takes.
 - footprint: text, data and bss of the C library (generated/c) per
   feature and the deepest stack of each public function, on x86-64 (gcc)
-  and Cortex-M4 (clang-14), compile only (footprint.py); with --markdown
-  it rewrites its own block of the file, so `--only footprint` leaves the
-  other numbers alone.
+  and Cortex-M4 (clang-14), compile only (footprint.py); then the library
+  linked into one small Cortex-M4 program per feature, with flash, RAM,
+  a stack bound and instructions per frame in QEMU (board_footprint.py);
+  with --markdown it rewrites its own block of the file, so `--only
+  footprint` leaves the other numbers alone.
 - reliability (only when named in --only: about an hour and a half on 2
   cores, of which the fuzz sessions took 31 minutes):
   healthy active runs of `osdkc device` that must all pass, and seeded runs
