@@ -226,7 +226,8 @@ def test_the_linked_programs_grow_with_each_feature_and_the_stack_bound_holds(bo
     c = b["cycles"]
     for mode in ("receive", "decode"):
         m = c["modes"][mode]
-        assert m["instructions_per_tick"] == 40.0   # 25 MHz SysTick, one instruction per virtual ns
+        # 25 MHz SysTick, one instruction per virtual ns; the calibration reads the clock to a tick
+        assert abs(m["instructions_per_tick"] - 40.0) < 0.01
         assert 0 < m["stack_used"] <= c["stack_bound"]
         assert m["most_per_frame"] >= m["instructions_per_frame"] > 0
     assert c["modes"]["decode"]["instructions_per_frame"] > c["modes"]["receive"]["instructions_per_frame"]
