@@ -231,7 +231,8 @@ def test_the_linked_programs_grow_with_each_feature_and_the_stack_bound_holds(bo
         assert 0 < m["stack_used"] <= c["stack_bound"]
         assert m["most_per_frame"] >= m["instructions_per_frame"] > 0
     assert c["modes"]["decode"]["instructions_per_frame"] > c["modes"]["receive"]["instructions_per_frame"]
-    text = "\n".join(__import__("osdk_conformance.bench.board_footprint", fromlist=["x"]).markdown(b))
+    from osdk_conformance.bench.board_footprint import markdown
+    text = "\n".join(markdown(b))
     assert "| 1: receive" in text and ("MISSED" in text or "met" in text)
 
 
@@ -245,6 +246,7 @@ def test_a_call_through_a_pointer_with_nothing_to_bound_it_fails_the_section(tmp
 def test_the_stack_paint_catches_a_bound_that_misses_a_path(monkeypatch, board_footprint):
     from osdk_conformance.bench import board_footprint as bf
     real = bf.deepest
-    monkeypatch.setattr(bf, "deepest", lambda funcs, entry: {**real(funcs, entry), "bytes": 16})
+    monkeypatch.setattr(bf, "deepest", lambda funcs, entries: {e: {**b, "bytes": 16}
+                                                                for e, b in real(funcs, entries).items()})
     out = bf.measure(seconds=1.0)
     assert not out["ok"] and "more than the bound of 16" in out["error"]

@@ -38,14 +38,13 @@ import time
 from pathlib import Path
 
 from osdk_conformance.bench import corpus as bench_corpus
-from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths
+from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths, su_frames
+from osdk_conformance.board.bridge import MACHINE, QEMU
 from osdk_conformance.core.paths import ROOT
 
 C_TARGET = ROOT / "conformance" / "testees" / "c-target"
-BOARD = "mps2-an386"
-MACHINE = "mps2-an386"
+BOARD = "mps2-an386"      # the board file QEMU's MACHINE runs
 CROSS = "arm-none-eabi-"
-QEMU = "qemu-system-arm"
 FEATURES = (
     (0, "the board alone (start-up, UART, a loop taking bytes)"),
     (1, "receive (deframer: frames, rejections)"),
@@ -159,18 +158,15 @@ def _pushed_frame(insns: list[tuple[str, str]]) -> int:
 def _su_frames(obj_dir: Path, program: str) -> dict[str, tuple[int, bool]]:
     """-fstack-usage of the files one program links (its own and the library's, not
     the other programs'): name -> (bytes, bounded); a static name in two files
-    takes the larger frame."""
+    takes the larger frame, and is bounded only if both are."""
     out: dict[str, tuple[int, bool]] = {}
     others = {p.name for p in obj_dir.glob("footprint-*.su")} | {"cycles.su"}
     for su in sorted(obj_dir.glob("*.su")):
         if su.name in others and su.name != f"{program}.su":
             continue
-        for line in su.read_text().splitlines():
-            where, size, qual = line.split("\t")
-            name = where.rsplit(":", 1)[1]
-            frame = (int(size), "dynamic" not in qual or "bounded" in qual)
-            if name not in out or frame[0] > out[name][0]:
-                out[name] = (frame[0], frame[1] and out.get(name, frame)[1])
+        for name, (size, bounded) in su_frames(su).items():
+            had = out.get(name, (size, bounded))
+            out[name] = (max(size, had[0]), bounded and had[1])
     return out
 
 
@@ -217,17 +213,18 @@ def call_graph(elf: Path, su: dict[str, tuple[int, bool]], callbacks: tuple[str,
     return funcs
 
 
-def deepest(funcs: dict, entry: str) -> dict:
-    """The deepest stack from `entry`: bytes and the path that takes them."""
-    if entry not in funcs:
-        raise BoardError(f"the program has no function {entry}")
+def deepest(funcs: dict, entries: list[str]) -> dict[str, dict]:
+    """The deepest stack from each entry: bytes and the path that takes them."""
+    missing = [e for e in entries if e not in funcs]
+    if missing:
+        raise BoardError(f"the program has no function {', '.join(missing)}")
     keyed = {("", n): {"frame": f["frame"], "bounded": f["bounded"], "calls": [("", c) for c in f["calls"]]}
              for n, f in funcs.items()}
     try:
-        d = deepest_paths(keyed, [("", entry)])[entry]
+        found = deepest_paths(keyed, [("", e) for e in entries])
     except StackBoundError as e:
         raise BoardError(str(e)) from None
-    return {"bytes": d["bytes"], "path": d["path"]}
+    return {e: {"bytes": d["bytes"], "path": d["path"]} for e, d in found.items()}
 
 
 # ---- instructions per frame ------------------------------------------------------------------
@@ -235,16 +232,21 @@ def deepest(funcs: dict, entry: str) -> dict:
 LINE = re.compile(rb"#cycles ((?:\w+=\d+ ?)+)")
 
 
-def run_cycles(elf: Path, data: bytes, mode: str, timeout: float = QEMU_TIMEOUT) -> dict[str, int]:
-    """measure/cycles.c over `data` in QEMU: its answer line as numbers."""
-    if len(data) + 8 > INPUT_ROOM:
-        raise BoardError(f"{len(data)} bytes do not fit the {INPUT_ROOM} bytes at __input")
+def input_address(elf: Path) -> int:
+    """Where measure/cycles.c reads its capture: __input, checked to lie past the image."""
     secs = sections(elf)
     end = max(addr + size for name, (size, addr) in secs.items() if name in (".text", ".ARM.exidx")
               ) + secs.get(".data", (0, 0))[0]
     addr = _symbol(elf, "__input")
     if end > addr:
         raise BoardError(f"the image ends at {end:#x}, past __input at {addr:#x}")
+    return addr
+
+
+def run_cycles(elf: Path, addr: int, data: bytes, mode: str, timeout: float = QEMU_TIMEOUT) -> dict[str, int]:
+    """measure/cycles.c over `data`, loaded at `addr` (input_address), in QEMU: its answer line as numbers."""
+    if len(data) + 8 > INPUT_ROOM:
+        raise BoardError(f"{len(data)} bytes do not fit the {INPUT_ROOM} bytes at __input")
     with tempfile.NamedTemporaryFile(prefix="osdkc-cycles-", suffix=".bin") as fh:
         fh.write(struct.pack("<II", len(data), MODES[mode]) + data)
         fh.flush()
@@ -301,9 +303,10 @@ def _measure(board: str, seconds: float) -> dict:
     for n, label in FEATURES:
         elf = out_dir / f"footprint-{n}.elf"
         funcs = call_graph(elf, _su_frames(out_dir / "obj", elf.stem))
-        row = {"feature": n, "label": label, **sizes(elf), "stack": deepest(funcs, ENTRY)}
+        bounds = deepest(funcs, [ENTRY, *(e for e in LIBRARY_ENTRIES if e in funcs)])
+        row = {"feature": n, "label": label, **sizes(elf), "stack": bounds.pop(ENTRY)}
         row["ram"] = row["static_ram"] + row["stack"]["bytes"]
-        row["entries"] = {e: deepest(funcs, e)["bytes"] for e in LIBRARY_ENTRIES if e in funcs}
+        row["entries"] = {e: b["bytes"] for e, b in bounds.items()}
         features.append(row)
     board_only = features[0]
     for row in features:
@@ -313,13 +316,14 @@ def _measure(board: str, seconds: float) -> dict:
 
     elf = out_dir / "cycles.elf"
     funcs = call_graph(elf, _su_frames(out_dir / "obj", elf.stem))
-    bound = deepest(funcs, ENTRY)
+    bound = deepest(funcs, [ENTRY])[ENTRY]
     c = bench_corpus.corpus(CYCLES_CORPUS, seconds=seconds)
     data = Path(c.path).read_bytes()
     cycles = {"corpus": CYCLES_CORPUS, "seconds": seconds, "frames": c.frames, "bytes": c.bytes,
               "stack_bound": bound["bytes"], "modes": {}}
+    addr = input_address(elf)
     for mode in MODES:
-        r = run_cycles(elf, data, mode)
+        r = run_cycles(elf, addr, data, mode)
         if r.get("frames") != c.frames or r.get("errors") != 0 or r.get("bytes") != c.bytes:
             raise BoardError(f"the board counted {r.get('frames')} frames and {r.get('errors')} errors in "
                              f"{r.get('bytes')} bytes; the corpus holds {c.frames} frames, no error, {c.bytes} bytes")

@@ -28,7 +28,7 @@ import tempfile
 from pathlib import Path
 
 from osdk_conformance.bench import board_footprint, report
-from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths
+from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths, su_frames
 from osdk_conformance.core.paths import ROOT
 
 LIB = ROOT / "generated" / "c"
@@ -142,14 +142,6 @@ def _calls(obj: Path, readelf: str) -> dict[str, set[str]]:
     return calls
 
 
-def _frames(su: Path) -> dict[str, tuple[int, bool]]:
-    out = {}
-    for line in su.read_text().splitlines():
-        where, size, qual = line.split("\t")
-        out[where.rsplit(":", 1)[1]] = (int(size), "dynamic" not in qual or "bounded" in qual)
-    return out
-
-
 def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
     t = TARGETS[name]
     readelf = shutil.which("readelf") or shutil.which("llvm-readelf-14")
@@ -183,7 +175,7 @@ def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
             g, local = _symbols(obj, readelf)
             for sym in g:
                 globals_[sym] = src
-            frames = _frames(obj.with_suffix(".su"))
+            frames = su_frames(obj.with_suffix(".su"))
             for fn in g | local:
                 frame, bounded = frames.get(fn, (0, True))
                 funcs[(src, fn)] = {"frame": frame, "bounded": bounded, "refs": set()}

@@ -3,9 +3,20 @@ deepest of its callees', along the worst path. The footprint section uses
 it on objects (footprint.py) and on linked programs (board_footprint.py)."""
 from __future__ import annotations
 
+from pathlib import Path
+
 
 class StackBoundError(Exception):
     pass
+
+
+def su_frames(su: Path) -> dict[str, tuple[int, bool]]:
+    """A -fstack-usage file: function name -> (frame bytes, bounded)."""
+    out = {}
+    for line in su.read_text().splitlines():
+        where, size, qual = line.split("\t")
+        out[where.rsplit(":", 1)[1]] = (int(size), "dynamic" not in qual or "bounded" in qual)
+    return out
 
 
 def deepest_paths(funcs: dict, entries: list[tuple[str, str]]) -> dict[str, dict]:
