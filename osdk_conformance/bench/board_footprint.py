@@ -250,7 +250,8 @@ def run_cycles(elf: Path, addr: int, data: bytes, mode: str, timeout: float = QE
     with tempfile.NamedTemporaryFile(prefix="osdkc-cycles-", suffix=".bin") as fh:
         fh.write(struct.pack("<II", len(data), MODES[mode]) + data)
         fh.flush()
-        argv = [QEMU, "-machine", MACHINE, "-display", "none", "-monitor", "none", "-serial", "stdio",
+        # -no-reboot: a fault's reset (boards/startup.c) ends QEMU instead of starting the program again
+        argv = [QEMU, "-machine", MACHINE, "-display", "none", "-monitor", "none", "-serial", "stdio", "-no-reboot",
                 "-icount", "shift=0", "-accel", "tcg,tb-size=32", "-device", f"loader,file={fh.name},addr={addr:#x}",
                 "-kernel", str(elf)]
         try:
@@ -258,12 +259,14 @@ def run_cycles(elf: Path, addr: int, data: bytes, mode: str, timeout: float = QE
         except OSError as e:
             raise BoardError(f"cannot start {QEMU}: {e.strerror or e} (tools/apt-packages.sh installs it)") from None
         out = b""
+        sel = selectors.DefaultSelector()
         try:
             # the firmware waits after its line: read until it is there, then stop QEMU
-            sel = selectors.DefaultSelector()
             sel.register(p.stdout, selectors.EVENT_READ)
             deadline = time.monotonic() + timeout
             while not LINE.search(out) or not out.endswith(b"\n"):
+                if b"#fault" in out:
+                    raise BoardError("the measuring program faulted on the board")
                 left = deadline - time.monotonic()
                 if left <= 0 or not sel.select(left):
                     raise BoardError(f"{QEMU} gave no #cycles line in {timeout:g} s: {out[-300:]!r}")
@@ -273,10 +276,9 @@ def run_cycles(elf: Path, addr: int, data: bytes, mode: str, timeout: float = QE
                     raise BoardError(f"{QEMU} ended before the #cycles line: {(err or out.decode(errors='replace'))[-300:]}")
                 out += chunk
         finally:
+            sel.close()
             p.kill()
             p.wait()
-    if b"#fault" in out:
-        raise BoardError("the measuring program faulted on the board")
     return {k.decode(): int(v) for k, v in (kv.split(b"=") for kv in LINE.search(out).group(1).split())}
 
 
