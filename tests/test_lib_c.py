@@ -215,3 +215,25 @@ def test_footprint_fails_on_recursion():
     funcs = {("a.c", "f"): {"frame": 16, "bounded": False, "calls": []}}
     with pytest.raises(stack_depth.StackBoundError, match="unbounded"):
         stack_depth.deepest_paths(funcs, [("a.c", "f")])
+
+
+def test_footprint_cortex_m4_compiles_every_file_with_only_its_listed_libc():
+    # clang-14 comes with the setup (tools/apt-packages.sh); a file needing more than features.json lists fails here
+    from osdk_conformance.bench import footprint
+    fp = footprint.measure(("cortex-m4",), board=False)
+    assert fp["ok"], fp["targets"]["cortex-m4"].get("error")
+    assert fp["targets"]["cortex-m4"]["stack"]["osdk_frame_decode"]["bytes"] > 0
+
+
+def test_the_tiny_libc_lets_the_compiler_call_memmove_but_wants_the_header_for_the_rest(tmp_path):
+    # osdk_deframer.c copies with a loop that gcc turns into memmove: listed, never declared
+    from osdk_conformance.bench import footprint
+    src = tmp_path / "a.c"
+    src.write_text("#include <stdint.h>\nvoid f(uint8_t *d, const uint8_t *s) { while (*s) *d++ = *s++; }\n")
+    where = footprint._tiny_libc(src, ["memmove"], tmp_path / "libc-a")
+    assert list(where.iterdir()) == []
+    with pytest.raises(footprint.FootprintError, match="needs size_t strlen.*but does not include string.h"):
+        footprint._tiny_libc(src, ["memmove", "strlen"], tmp_path / "libc-b")
+    src.write_text("#include <string.h>\nvoid f(char *d) { memmove(d, d + 1, 2); }\n")
+    declared = (footprint._tiny_libc(src, ["memmove"], tmp_path / "libc-c") / "string.h").read_text()
+    assert "void *memmove(" in declared

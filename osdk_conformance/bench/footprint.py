@@ -62,6 +62,10 @@ PROTOTYPES = {
 }
 # headers the compiler itself provides to freestanding code
 FREESTANDING = {"stddef.h", "stdint.h", "stdbool.h", "stdarg.h", "float.h", "limits.h", "iso646.h"}
+# What GCC and Clang may call on their own, even in freestanding code (a copy
+# loop or a struct assignment becomes memmove or memcpy): an object can need
+# one of these while its source includes no header that declares it.
+COMPILER_EMITTED = {"memcpy", "memmove", "memset", "memcmp"}
 INCLUDE = re.compile(r"^\s*#\s*include\s*<([^>]+)>", re.M)
 
 
@@ -91,10 +95,18 @@ def _tiny_libc(src: Path, libc: list[str], where: Path) -> Path:
         if header == "stdio.h":
             lines.append("#include <stdarg.h>")
         (where / header).write_text("\n".join(lines + wanted.pop(header, [])) + "\n")
+    for header in list(wanted):
+        wanted[header] = [p for p in wanted[header] if _name(p) not in COMPILER_EMITTED]
+        if not wanted[header]:
+            del wanted[header]
     if wanted:
         raise FootprintError(f"{src.name} needs {', '.join(sorted(f for fs in wanted.values() for f in fs))} "
                              f"but does not include {', '.join(sorted(wanted))}")
     return where
+
+
+def _name(prototype: str) -> str:
+    return re.search(r"(\w+)\(", prototype).group(1)
 
 
 def _sizes(obj: Path, readelf: str) -> dict[str, int]:
