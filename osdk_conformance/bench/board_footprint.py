@@ -38,6 +38,7 @@ import time
 from pathlib import Path
 
 from osdk_conformance.bench import corpus as bench_corpus
+from osdk_conformance.bench.child import kill_group
 from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths, su_frames
 from osdk_conformance.board.bridge import MACHINE, QEMU
 from osdk_conformance.core.paths import ROOT
@@ -71,14 +72,21 @@ class BoardError(Exception):
 
 def _run(argv: list[str], timeout: float = 600.0) -> str:
     try:
-        r = subprocess.run(argv, capture_output=True, text=True, timeout=timeout)
+        # a group of its own: a signal or the timeout takes make's compilers along with it
+        p = subprocess.Popen(argv, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True, process_group=0)
     except OSError as e:
         raise BoardError(f"cannot run {argv[0]}: {e.strerror or e} (tools/apt-packages.sh installs it)") from None
+    try:
+        out, err = p.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
         raise BoardError(f"{' '.join(argv[:3])} took more than {timeout:g} s") from None
-    if r.returncode:
-        raise BoardError(f"{' '.join(argv[:3])} failed: {(r.stderr or r.stdout).strip()[-2000:]}")
-    return r.stdout
+    finally:
+        if p.returncode is None:
+            kill_group(p)
+    if p.returncode:
+        raise BoardError(f"{' '.join(argv[:3])} failed: {(err or out).strip()[-2000:]}")
+    return out
 
 
 def build(board: str = BOARD) -> Path:

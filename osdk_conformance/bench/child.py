@@ -41,6 +41,16 @@ class Child:
         return lines[-1] if lines else ""
 
 
+def kill_group(proc: subprocess.Popen) -> None:
+    """SIGKILL the process group `proc` leads (started with process_group=0 or a session
+    of its own), so that its helpers go too (gcc's cc1 and as, make's compilers), and reap it."""
+    try:
+        os.killpg(proc.pid, 9)
+    except ProcessLookupError:
+        pass
+    proc.wait()
+
+
 def run(argv: list[str], timeout: float, peak_rss: bool = False, env: dict[str, str] | None = None,
         discard_stdout: bool = False) -> Child:
     """`argv` with no input, output to temporary files (no pipe can fill up), reaped with os.wait4.

@@ -28,6 +28,7 @@ import tempfile
 from pathlib import Path
 
 from osdk_conformance.bench import board_footprint, report
+from osdk_conformance.bench.child import kill_group
 from osdk_conformance.bench.stack_depth import StackBoundError, deepest_paths, su_frames
 from osdk_conformance.core.paths import ROOT
 
@@ -165,19 +166,25 @@ def measure_target(name: str, info: dict, lib: Path = LIB) -> dict:
     with tempfile.TemporaryDirectory(prefix="osdkc-footprint-") as tmp:
         work = Path(tmp)
         procs = []
-        for src in sorted(info["files"]):
-            path = lib / src
-            inc = ["-isystem", str(_tiny_libc(path, info["files"][src]["libc"], work / "libc" / src))] \
-                if t["tiny_libc"] else []
-            obj = work / (src[:-2] + ".o")
-            procs.append((src, obj, subprocess.Popen([t["cc"], *flags, *inc, "-I", str(lib), "-o", str(obj), str(path)],
-                                                     cwd=work, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                                     text=True)))
         failed = []
-        for src, obj, p in procs:
-            _, err = p.communicate()
-            if p.returncode:
-                failed.append(f"{src}: {err.strip()[:1500]}")
+        try:
+            for src in sorted(info["files"]):
+                path = lib / src
+                inc = ["-isystem", str(_tiny_libc(path, info["files"][src]["libc"], work / "libc" / src))] \
+                    if t["tiny_libc"] else []
+                obj = work / (src[:-2] + ".o")
+                # a group of its own: the driver's cc1 and as go with it when it is killed
+                procs.append((src, obj, subprocess.Popen([t["cc"], *flags, *inc, "-I", str(lib), "-o", str(obj),
+                                                          str(path)], cwd=work, stdout=subprocess.PIPE,
+                                                         stderr=subprocess.PIPE, text=True, process_group=0)))
+            for src, obj, p in procs:
+                _, err = p.communicate()
+                if p.returncode:
+                    failed.append(f"{src}: {err.strip()[:1500]}")
+        finally:   # a signal or an error on the way: no compiler is left running
+            for _, _, p in procs:
+                if p.poll() is None:
+                    kill_group(p)
         if failed:
             return {**out, "ok": False, "error": "compile failed: " + " | ".join(failed)}
         sizes, funcs, globals_, entries = {}, {}, {}, []
