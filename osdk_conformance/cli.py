@@ -12,7 +12,9 @@ import argparse
 import importlib
 import importlib.metadata
 import os
+import signal
 import sys
+import threading
 from dataclasses import dataclass
 from typing import Callable, NoReturn, Sequence
 
@@ -151,26 +153,46 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
     return ap
 
 
+class _Terminated(BaseException):
+    """SIGTERM, for a command that does not handle it itself: it ends the
+    command as Ctrl-C does (a BaseException, so no `except Exception` keeps it)."""
+
+
+def _terminate(signum: int, frame: object) -> NoReturn:
+    raise _Terminated
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     argv = sys.argv[1:] if argv is None else list(argv)
+    # The commands that must clean up in their own order on a signal (runs,
+    # device sessions, the simulator) set their own handlers while they run;
+    # every other one stops on SIGTERM as on Ctrl-C, with the shell's 143.
+    in_main = threading.current_thread() is threading.main_thread()
+    old = signal.signal(signal.SIGTERM, _terminate) if in_main else None
     try:
-        args = build_parser(argv).parse_args(argv)
-    except SystemExit as e:  # --help, or a bad command line already reported
-        return e.code if isinstance(e.code, int) else 2
-    cmd: Command = args.command_row
-    try:
+        try:
+            args = build_parser(argv).parse_args(argv)
+        except SystemExit as e:  # --help, or a bad command line already reported
+            return e.code if isinstance(e.code, int) else 2
+        cmd: Command = args.command_row
         return cmd.load(cmd.run)(args)
     except UsageError as e:
         print(f"osdkc: {e}", file=sys.stderr)
         return 2
-    except KeyboardInterrupt:
+    except KeyboardInterrupt:  # also while the command's modules are still being imported
         print("osdkc: interrupted", file=sys.stderr)
         return 130
+    except _Terminated:
+        print("osdkc: terminated", file=sys.stderr)
+        return 128 + signal.SIGTERM
     except BrokenPipeError:
         # The reader went away (e.g. `| head`): not an error of ours. Point
         # stdout at /dev/null so the interpreter's final flush stays quiet.
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    finally:
+        if in_main:
+            signal.signal(signal.SIGTERM, old)
 
 
 if __name__ == "__main__":

@@ -158,3 +158,18 @@ def test_kit_stops_at_the_interrupted_step_and_runs_no_later_one(tmp_path):
     assert summary["interrupted"] == "SIGINT"
     assert child.left_behind() == []
     assert seconds < GUARD_S
+
+
+@pytest.mark.parametrize("sig,status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)], ids=["SIGINT", "SIGTERM"])
+def test_a_command_without_handlers_of_its_own_ends_as_every_command_does(sig, status):
+    # `osdkc bench --only footprint` sets no signal handler: the command line's own is what answers here,
+    # while QEMU runs the firmware, and QEMU goes with it
+    child = Child("bench", "--only", "footprint")
+    child.wait_for("linked for", stream="err")
+    time.sleep(1.5)
+    code, out, err, seconds = child.interrupt(sig)
+    assert code == status, err
+    assert "Traceback" not in err and err.rstrip().endswith("interrupted" if sig == signal.SIGINT else "terminated")
+    assert seconds < GUARD_S
+    assert child.left_behind() == []
+
