@@ -55,7 +55,7 @@ from osdk_conformance.harness.runner import (apply_failure_list, available_impls
 from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, Testee, TesteeStartError
 from osdk_conformance.harness.vectors import Case, compare as judge, load_checked_cases
 from osdk_conformance.reference import codec, values
-from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, stream_events
+from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, timed_events
 from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
 from osdk_conformance.device.checks import Options as _DeviceOptions
@@ -71,6 +71,8 @@ __all__ = [
     "profiles", "broadcast_items", "ieee_float",
     # decoding
     "Event", "decode", "decode_hex", "decode_file", "decode_stream",
+    # flight data for people (the `flight` extra)
+    "flight_data", "broadcasts", "table", "plot",
     # encoding
     "encode_frame", "encode_movement_control", "encode_broadcast", "encode_broadcast_frame",
     # the control mode byte and movement control
@@ -177,6 +179,14 @@ class Event:
     header was good; garbage has `length`. `direction` is set when both
     directions of a capture are decoded. `model` is the whole event exactly
     as `osdkc decode` prints it; `to_json()` is that line.
+
+    `time` is the capture time in seconds since the Unix epoch: that of the
+    pcapng record whose bytes completed the event (when the kit's recorder
+    read them from the port); None for raw bytes, which carry no time.
+    `time_ns` is the same in exact nanoseconds. `fc_time` is the flight
+    controller's own time stamp of a decoded broadcast (item time_stamp,
+    which counts 1/400 s) in seconds; None for other events and for a
+    broadcast without the item. Neither is part of the value model.
     """
 
     offset: int
@@ -191,7 +201,21 @@ class Event:
     length: int | None = None
     frame_header: Mapping[str, Any] | None = None
     raw: str | None = None
+    time_ns: int | None = None
     model: Mapping[str, Any] = field(default_factory=dict, repr=False, compare=False)
+
+    @property
+    def time(self) -> float | None:
+        """The capture time in seconds since the Unix epoch; None for raw bytes."""
+        return None if self.time_ns is None else self.time_ns / 1e9
+
+    @property
+    def fc_time(self) -> float | None:
+        """A broadcast's own time stamp (item time_stamp) in seconds; None without one."""
+        if self.command != "broadcast":
+            return None
+        stamp = (self.value or {}).get("data", {}).get("time_stamp")
+        return None if stamp is None else stamp["time"] / values.FC_TICKS_PER_S
 
     @classmethod
     def from_model(cls, event: Mapping[str, Any]) -> "Event":
@@ -220,7 +244,7 @@ class Event:
         return value_model.dumps(self.model, indent=indent)
 
 
-_EVENT_FIELDS = frozenset(Event.__dataclass_fields__) - {"model"}
+_EVENT_FIELDS = frozenset(Event.__dataclass_fields__) - {"model", "time_ns"}
 _new_event = object.__new__
 _set_state = object.__setattr__
 
@@ -236,11 +260,14 @@ def _event(state: dict[str, Any], model: dict[str, Any]) -> Event:
     return ev
 
 
-def _events(models: Iterable[dict[str, Any]]) -> Iterator[Event]:
+def _events(timed: Iterable[tuple[dict[str, Any], int | None]]) -> Iterator[Event]:
     # every key of a decoder's event is a field of Event (tests/test_accel.py)
     try:
-        for ev in models:
-            yield _event(ev.copy(), ev)
+        for ev, ts in timed:
+            state = ev.copy()
+            if ts is not None:
+                state["time_ns"] = ts
+            yield _event(state, ev)
     except UsageError as e:  # a damaged capture, or --direction tx/both on raw bytes
         raise InputError(str(e)) from None
 
@@ -253,7 +280,7 @@ def decode(data: BytesLike, profile: str, *, direction: Direction = "rx") -> lis
     raw = _bytes(data, "data")
     _profile(profile)
     _direction(direction)
-    return list(_events(stream_events([raw], profile, direction, "data")))
+    return list(_events(timed_events([raw], profile, direction, "data")))
 
 
 def decode_hex(text: str, profile: str, *, direction: Direction = "rx") -> list[Event]:
@@ -283,7 +310,7 @@ def decode_stream(source: Iterable[bytes] | BinaryIO, profile: str, *, direction
         chunks = (_bytes(chunk, "each chunk") for chunk in source)
     else:
         raise InputError(f"source must be a binary file object or an iterable of bytes, got {type(source).__name__}")
-    return _events(stream_events(chunks, profile, direction, name))
+    return _events(timed_events(chunks, profile, direction, name))
 
 
 def decode_file(path: str | os.PathLike[str], profile: str, *, direction: Direction = "rx") -> Iterator[Event]:
@@ -303,6 +330,83 @@ def decode_file(path: str | os.PathLike[str], profile: str, *, direction: Direct
             yield from decode_stream(fh, profile, direction=direction, name=str(name))
 
     return read()
+
+
+# ---------------------------------------------------------------- flight data
+
+FLIGHT_EXTRA = "pip install 'osdk-conformance[flight]'"
+
+
+def _flight():
+    try:
+        # numpy and pyarrow are the optional `flight` extra, and cost start-up time: imported when asked for
+        from osdk_conformance.flight import columns, plot, records, tables
+    except ImportError as e:
+        raise InputError(f"flight data needs numpy and pyarrow ({one_line(e)}): {FLIGHT_EXTRA}") from None
+    return columns, records, tables, plot
+
+
+def _flight_source(source: object, profile: str) -> Any:
+    columns = _flight()[0]
+    _profile(profile)
+    if not isinstance(source, (bytes, bytearray, memoryview)):
+        try:
+            source = os.fspath(cast(Any, source))
+        except TypeError:
+            raise InputError(f"source must be a path or bytes, got {type(source).__name__}") from None
+    try:
+        return columns.read(cast(Any, source), profile)
+    except UsageError as e:
+        raise InputError(str(e)) from None
+
+
+def flight_data(source: str | os.PathLike[str] | BytesLike, profile: str) -> Any:
+    """The broadcasts of a capture (a path, or the bytes of a pcapng capture
+    or of raw received bytes) as columns filled by the native decoder: a
+    `FlightData` (osdk_conformance/flight/columns.py) with `values(name)`,
+    `valid(name)`, `bits(name)` as numpy arrays, `time`, `fc_time`,
+    `offset` per frame, `counts` of everything else the input held, and
+    `to_arrow()`/`records()`. Needs the `flight` extra and the native
+    decoder; InputError when either is missing."""
+    return _flight_source(source, profile)
+
+
+def broadcasts(source: str | os.PathLike[str] | BytesLike, profile: str) -> Iterator[Any]:
+    """Each broadcast frame as a typed record (flight/records.py):
+    `b.battery` an int or None, `b.quaternion.q0` a float, enums as
+    IntEnums, `b.time` (capture time, s), `b.fc_time` (the FC's time
+    stamp, s), `b.attitude` (roll, pitch, yaw in degrees)."""
+    data = _flight_source(source, profile)
+    return _flight()[1].records(data)
+
+
+def table(source: str | os.PathLike[str] | BytesLike, profile: str, items: Sequence[str] | None = None) -> Any:
+    """The broadcasts as a pyarrow Table, one row per frame: `offset`, `time`
+    (when the capture has times), `fc_time`, then a column per field of
+    `items` (all when None), named by its dotted path ("quaternion.q0"),
+    null where the frame lacked the item. `.to_pandas()` makes a DataFrame."""
+    data = _flight_source(source, profile)
+    tables = _flight()[2]
+    try:
+        return tables.to_arrow(data, None if items is None else list(items))
+    except UsageError as e:
+        raise InputError(str(e)) from None
+
+
+def plot(source: str | os.PathLike[str] | BytesLike, profile: str, items: Sequence[str] = ("battery", "attitude"),
+         output: str | os.PathLike[str] = "flight.html") -> str:
+    """Draws `items` of a capture (`osdkc plot`): an HTML page, or an SVG
+    when `output` ends in .svg. Returns the output's path."""
+    data = _flight_source(source, profile)
+    plot_module = _flight()[3]
+    out = os.fspath(output)
+    try:
+        text = plot_module.svg(data, list(items)) if out.lower().endswith(".svg") else plot_module.page(data, list(items))
+    except UsageError as e:
+        raise InputError(str(e)) from None
+    with open(out, "w", encoding="utf-8") as fh:
+        fh.write(text)
+    return out
 
 
 # ---------------------------------------------------------------- encoding

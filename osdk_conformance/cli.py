@@ -42,8 +42,10 @@ GROUPS = {
 }
 
 COMMANDS = (
-    Command(("decode",), "find and decode frames in a byte stream, one JSON object per line",
-            "reference.decode", "run_decode"),
+    Command(("decode",), "find and decode frames in a byte stream, one JSON object per line (or the broadcasts "
+                         "as a CSV or Parquet table)", "flight.decode_command", "run_decode"),
+    Command(("plot",), "draw the flight data of a capture (battery, attitude, velocity, any item) as HTML or SVG",
+            "flight.plot_command", "run_plot"),
     Command(("spec", "trace"), "map every seed entry to the spec element that carries it",
             "traceability.trace", "run_trace"),
     Command(("spec", "check"), "compile the .ksy files, validate rules and trace, check generated/",

@@ -28,6 +28,7 @@ reusing what a user's machine already has: the Go module and build caches
 from __future__ import annotations
 
 import concurrent.futures
+import csv
 import functools
 import json
 import os
@@ -227,6 +228,8 @@ LINES: dict[str, dict[str, object]] = {
     "readme.osdkc": {
         "osdkc decode --profile a3-fw3.1 capture.bin": RUN,
         "osdkc decode --profile a3-fw3.1 --direction both run.pcapng": RUN,
+        "osdkc decode --profile a3-fw3.1 --format csv --items battery,quaternion run.pcapng > flight.csv": RUN,
+        "osdkc plot run.pcapng --profile a3-fw3.1 --items battery,attitude -o flight.html": RUN,
         "osdkc spec trace --seed FILE": NotRun("needs the seed"),
         "osdkc spec check": Elsewhere("tests/test_lone_clone.py", ('"osdk_conformance.cli", "spec", "check")',)),
         "osdkc vectors check": Elsewhere("tests/test_vectors.py", ('osdkc("vectors", "check")',)),
@@ -1112,6 +1115,24 @@ def job_osdkc(tmp: Path) -> None:
                                                                                              "both")
     ran["osdkc wireshark install"] = lambda cmd: osdkc_wireshark_install(cmd, tmp / "home", listing.where)
     ran["osdkc --version"] = version
+
+    def tabled(cmd: str) -> None:
+        broadcasts = [e for e in api.decode_file(tmp / "run.pcapng", "a3-fw3.1") if e.command == "broadcast"]
+        json_status = run("osdkc decode --profile a3-fw3.1 run.pcapng > /dev/null", tmp, cmd, status=None).returncode
+        run(cmd, tmp, f"{listing.where}: {cmd}", status=json_status)
+        with open(tmp / "flight.csv", newline="") as fh:
+            rows = list(csv.DictReader(fh))
+        # an empty cell: a frame without the battery item
+        assert [r["battery"] for r in rows] == [str(e.value["data"].get("battery", "")) for e in broadcasts] and rows, cmd
+        assert list(rows[0])[:3] == ["offset", "time", "fc_time"] and "quaternion.q0" in rows[0], cmd
+
+    def plotted(cmd: str) -> None:
+        run(cmd, tmp, f"{listing.where}: {cmd}")
+        page = (tmp / "flight.html").read_text()
+        assert all(f'data-series="{s}"' in page for s in ("battery", "roll", "pitch", "yaw")), cmd
+
+    ran["osdkc decode --profile a3-fw3.1 --format csv --items battery,quaternion run.pcapng > flight.csv"] = tabled
+    ran["osdkc plot run.pcapng --profile a3-fw3.1 --items battery,attitude -o flight.html"] = plotted
 
     def explained(cmd: str) -> None:
         out = run(cmd, tmp, listing.where).stdout.decode()

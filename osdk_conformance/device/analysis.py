@@ -29,6 +29,7 @@ from osdk_conformance.core.deframe import HEADER_LEN, Deframer, Frame, Garbage, 
 from osdk_conformance.core.rules import default_rules, hz_of_code
 from osdk_conformance.core.wire import open_frame
 from osdk_conformance.reference.decode import DecodeFailure, payload_body
+from osdk_conformance.reference import values
 from osdk_conformance.sim.simulator import quaternion_to_euler
 
 HZ_OF_CODE = hz_of_code()
@@ -420,7 +421,7 @@ class Analyzer:
             step = (ticks - prev) % (1 << 32)
             if step >= 1 << 31:
                 return None
-            self._clock_s += step / 400.0
+            self._clock_s += step / values.FC_TICKS_PER_S
         return self._clock_s
 
     # ---- measurements --------------------------------------------------------

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "osdk_acks.h"
+#include "osdk_columns.h"
 #include "osdk_decoder.h"
 #include "osdk_deframer.h"
 #include "osdk_model_py.h"
@@ -319,6 +320,365 @@ static PyTypeObject DecoderType = {
     .tp_methods = Decoder_methods,
 };
 
+/* ---- the Columns type: the broadcasts of a stream as typed columns ------------------------------ */
+
+/*
+ * One row per broadcast frame that decodes: each leaf of the profile's layout
+ * (osdk_columns.h) in a bytearray of its element type with a bytearray of
+ * presence bytes beside it, the frame's stream offset (uint64) and the
+ * capture time of the bytes that completed it (int64 nanoseconds since the
+ * Unix epoch; NO_TIME when the bytes came without one). The bytearrays are handed to Python as they are
+ * (numpy and pyarrow wrap them without a copy); no object is made per
+ * value. Every other event is only counted.
+ */
+/* What the stream held besides the rows. The events the end of the input
+ * leaves (finish: a frame the recording stopped inside, and the receiver's
+ * rescan of its bytes) are counted apart, as `osdkc decode` marks them
+ * "capture_end" (reference/decode.py, mark_capture_end). */
+enum { C_FRAMES, C_BROADCASTS, C_OTHER, C_ENCRYPTED, C_UNDECODABLE, C_ERRORS, C_GARBAGE_BYTES, C_CAPTURE_END,
+       C_COUNT };
+static const char *const count_names[C_COUNT] = {
+    "frames", "broadcasts", "other_frames", "encrypted_frames", "undecodable_broadcasts", "errors",
+    "garbage_bytes", "capture_end_events",
+};
+
+typedef struct {
+    PyObject_HEAD
+    uint8_t profile;
+    const osdk_column_set_t *set;
+    osdk_deframer_t deframer;
+    uint8_t window[OSDK_DEFRAMER_MIN_BUFFER];
+    osdk_frame_t frame;
+    osdk_payload_t payload;
+    size_t rows, cap;
+    PyObject **data;   /* set->count bytearrays */
+    PyObject **valid;  /* set->count bytearrays */
+    void **data_at;    /* their buffers, valid until the next resize */
+    uint8_t **valid_at;
+    PyObject *offsets; /* uint64 per row */
+    PyObject *times;   /* int64 per row */
+    int64_t now;       /* the capture time of the bytes being fed, or NO_TIME */
+    uint64_t counts[C_COUNT];
+    bool failed;
+    bool busy;
+    bool finishing;    /* inside finish(): errors are the capture's end */
+} Columns;
+
+#define NO_TIME INT64_MIN
+
+static int resize(PyObject *array, size_t bytes)
+{
+    return PyByteArray_Resize(array, (Py_ssize_t)bytes);
+}
+
+/* Room for one more row: every array grows by half again when full. */
+static int columns_reserve(Columns *self)
+{
+    size_t i, cap;
+    if (self->rows < self->cap) return 0;
+    cap = self->cap < 1024 ? 1024 : self->cap + self->cap / 2;
+    for (i = 0; i < self->set->count; i++) {
+        if (resize(self->data[i], cap * osdk_col_size[self->set->columns[i].type]) < 0 ||
+            resize(self->valid[i], cap) < 0)
+            return -1;
+        self->data_at[i] = PyByteArray_AS_STRING(self->data[i]);
+        self->valid_at[i] = (uint8_t *)PyByteArray_AS_STRING(self->valid[i]);
+    }
+    if (resize(self->offsets, cap * sizeof(uint64_t)) < 0 || resize(self->times, cap * sizeof(int64_t)) < 0) return -1;
+    self->cap = cap;
+    return 0;
+}
+
+static void columns_frame(Columns *self, const osdk_event_t *ev)
+{
+    osdk_error_t err;
+    osdk_frame_t *f = &self->frame;
+    const osdk_frame_frame_data_t *fd;
+    uint64_t offset = ev->offset;
+    int64_t now = self->now;
+    osdk_error_clear(&err);
+    if (osdk_frame_decode(ev->raw, ev->length, self->profile, f, &err) != OSDK_OK) {
+        self->counts[C_ERRORS]++;
+        return;
+    }
+    self->counts[C_FRAMES]++;
+    if (f->is_ack || !f->data_present) {
+        self->counts[C_OTHER]++;
+        return;
+    }
+    if (f->data.tag != OSDK_FRAME_DATA_FRAME_DATA) { /* encrypted: its command cannot be read */
+        self->counts[C_ENCRYPTED]++;
+        return;
+    }
+    fd = &f->data.u.frame_data;
+    if (!fd->value_present || fd->value.body.tag != OSDK_PAYLOAD_BODY_BROADCAST) {
+        self->counts[C_OTHER]++;
+        return;
+    }
+    if (columns_reserve(self) < 0) {
+        self->failed = true;
+        return;
+    }
+    if (!osdk_broadcast_row(&fd->value.body.u.broadcast, self->data_at, self->valid_at, self->rows)) {
+        self->counts[C_UNDECODABLE]++;
+        return;
+    }
+    memcpy(PyByteArray_AS_STRING(self->offsets) + self->rows * sizeof(uint64_t), &offset, sizeof offset);
+    memcpy(PyByteArray_AS_STRING(self->times) + self->rows * sizeof(int64_t), &now, sizeof now);
+    self->rows++;
+    self->counts[C_BROADCASTS]++;
+}
+
+static void columns_event(void *user, const osdk_event_t *ev)
+{
+    Columns *self = user;
+    if (self->failed) return;
+    switch (ev->kind) {
+    case OSDK_EVENT_FRAME:
+        columns_frame(self, ev);
+        break;
+    case OSDK_EVENT_GARBAGE:
+        self->counts[C_GARBAGE_BYTES] += ev->length;
+        break;
+    case OSDK_EVENT_ERROR:
+    default:
+        self->counts[self->finishing ? C_CAPTURE_END : C_ERRORS]++;
+        break;
+    }
+}
+
+static PyObject *columns_run(Columns *self, const uint8_t *data, size_t len, bool finish)
+{
+    if (self->set == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "Columns.__init__ was not called");
+        return NULL;
+    }
+    if (self->busy) {
+        PyErr_SetString(PyExc_RuntimeError, "these Columns are already being filled (another thread)");
+        return NULL;
+    }
+    self->busy = true;
+    self->finishing = finish;
+    if (finish) osdk_deframer_finish(&self->deframer, columns_event, self);
+    else osdk_deframer_feed(&self->deframer, data, len, columns_event, self);
+    self->busy = self->finishing = false;
+    if (self->failed) return NULL;
+    return PyLong_FromSize_t(self->rows);
+}
+
+static PyObject *Columns_feed(Columns *self, PyObject *args, PyObject *kwargs)
+{
+    static char *kwlist[] = {"data", "time_ns", NULL};
+    Py_buffer buf;
+    PyObject *time = Py_None, *out;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "y*|O:feed", kwlist, &buf, &time)) return NULL;
+    if (time == Py_None) {
+        self->now = NO_TIME;
+    } else {
+        long long ns = PyLong_AsLongLong(time);
+        if ((ns == -1 && PyErr_Occurred()) || ns == NO_TIME) {
+            if (!PyErr_Occurred()) PyErr_SetString(PyExc_OverflowError, "time_ns out of range");
+            PyBuffer_Release(&buf);
+            return NULL;
+        }
+        self->now = (int64_t)ns;
+    }
+    out = columns_run(self, buf.buf, (size_t)buf.len, false);
+    PyBuffer_Release(&buf);
+    return out;
+}
+
+static PyObject *Columns_finish(Columns *self, PyObject *Py_UNUSED(ignored))
+{
+    return columns_run(self, NULL, 0, true);
+}
+
+static PyObject *column_description(const osdk_column_set_t *set, size_t i)
+{
+    const osdk_column_t *c = &set->columns[i];
+    static const char *const codes[OSDK_COL_TYPE_COUNT] = {
+        "bool", "u8", "u16", "u32", "u64", "i8", "i16", "i32", "i64", "f32", "f64",
+    };
+    return Py_BuildValue("(sssz)", c->name, set->items[c->item], codes[c->type], c->enum_name);
+}
+
+/* The schema: a tuple of (name, item, element type, enum or None), one per column. */
+static PyObject *Columns_schema(Columns *self, PyObject *Py_UNUSED(ignored))
+{
+    PyObject *out;
+    size_t i;
+    if (self->set == NULL) {
+        PyErr_SetString(PyExc_RuntimeError, "Columns.__init__ was not called");
+        return NULL;
+    }
+    out = PyTuple_New((Py_ssize_t)self->set->count);
+    if (out == NULL) return NULL;
+    for (i = 0; i < self->set->count; i++) {
+        PyObject *d = column_description(self->set, i);
+        if (d == NULL) {
+            Py_DECREF(out);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(out, (Py_ssize_t)i, d);
+    }
+    return out;
+}
+
+/* Hands the filled arrays over, cut to the rows made, and starts a new set. */
+static PyObject *Columns_take(Columns *self, PyObject *Py_UNUSED(ignored))
+{
+    PyObject *data = NULL, *valid = NULL, *counts = NULL, *out = NULL;
+    size_t i, n;
+    if (self->set == NULL || self->busy) {
+        PyErr_SetString(PyExc_RuntimeError, self->set == NULL ? "Columns.__init__ was not called"
+                                                              : "these Columns are being filled");
+        return NULL;
+    }
+    n = self->set->count;
+    data = PyTuple_New((Py_ssize_t)n);
+    valid = PyTuple_New((Py_ssize_t)n);
+    counts = PyDict_New();
+    if (data == NULL || valid == NULL || counts == NULL) goto done;
+    for (i = 0; i < n; i++) {
+        PyObject *d = self->data[i], *v = self->valid[i];
+        if (resize(d, self->rows * osdk_col_size[self->set->columns[i].type]) < 0 || resize(v, self->rows) < 0) goto done;
+        PyTuple_SET_ITEM(data, (Py_ssize_t)i, d);
+        PyTuple_SET_ITEM(valid, (Py_ssize_t)i, v);
+        self->data[i] = self->valid[i] = NULL;
+    }
+    if (resize(self->offsets, self->rows * sizeof(uint64_t)) < 0 || resize(self->times, self->rows * sizeof(int64_t)) < 0)
+        goto done;
+    for (i = 0; i < C_COUNT; i++) {
+        PyObject *v = PyLong_FromUnsignedLongLong(self->counts[i]);
+        if (v == NULL || PyDict_SetItemString(counts, count_names[i], v) < 0) {
+            Py_XDECREF(v);
+            goto done;
+        }
+        Py_DECREF(v);
+    }
+    out = Py_BuildValue("{s:n,s:O,s:O,s:O,s:O,s:O}", "rows", (Py_ssize_t)self->rows, "data", data, "valid", valid,
+                        "offset", self->offsets, "time", self->times, "counts", counts);
+    if (out == NULL) goto done;
+    Py_CLEAR(self->offsets);
+    Py_CLEAR(self->times);
+    /* a fresh set of empty arrays; the stream (deframer) goes on */
+    for (i = 0; i < n; i++) {
+        if ((self->data[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
+            (self->valid[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL) {
+            self->failed = true;
+            break;
+        }
+    }
+    self->offsets = PyByteArray_FromStringAndSize(NULL, 0);
+    self->times = PyByteArray_FromStringAndSize(NULL, 0);
+    if (self->offsets == NULL || self->times == NULL) self->failed = true;
+    self->rows = self->cap = 0;
+    memset(self->counts, 0, sizeof self->counts);
+    if (self->failed) Py_CLEAR(out);
+done:
+    Py_XDECREF(data);
+    Py_XDECREF(valid);
+    Py_XDECREF(counts);
+    return out;
+}
+
+static void columns_free_arrays(Columns *self)
+{
+    size_t i;
+    if (self->set != NULL) {
+        for (i = 0; i < self->set->count; i++) {
+            if (self->data) Py_CLEAR(self->data[i]);
+            if (self->valid) Py_CLEAR(self->valid[i]);
+        }
+    }
+    PyMem_Free(self->data);
+    PyMem_Free(self->valid);
+    PyMem_Free(self->data_at);
+    PyMem_Free(self->valid_at);
+    self->data = self->valid = NULL;
+    self->data_at = NULL;
+    self->valid_at = NULL;
+    Py_CLEAR(self->offsets);
+    Py_CLEAR(self->times);
+}
+
+static int Columns_init(Columns *self, PyObject *args, PyObject *kwargs)
+{
+    static char *kwlist[] = {"profile", NULL};
+    unsigned char profile;
+    const osdk_column_set_t *set;
+    size_t i, n;
+    if (!PyArg_ParseTupleAndKeywords(args, kwargs, "b:Columns", kwlist, &profile)) return -1;
+    if (self->busy) {
+        PyErr_SetString(PyExc_RuntimeError, "these Columns are being filled");
+        return -1;
+    }
+    set = osdk_broadcast_columns(profile);
+    if (set == NULL) {
+        PyErr_Format(PyExc_ValueError, "no broadcast layout for profile value %u", (unsigned)profile);
+        return -1;
+    }
+    columns_free_arrays(self);
+    n = set->count;
+    self->set = set;
+    self->data = PyMem_Calloc(n, sizeof(PyObject *));
+    self->valid = PyMem_Calloc(n, sizeof(PyObject *));
+    self->data_at = PyMem_Calloc(n, sizeof(void *));
+    self->valid_at = PyMem_Calloc(n, sizeof(uint8_t *));
+    if (self->data == NULL || self->valid == NULL || self->data_at == NULL || self->valid_at == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        if ((self->data[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
+            (self->valid[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
+            return -1;
+    }
+    if ((self->offsets = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
+        (self->times = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
+        return -1;
+    self->profile = profile;
+    self->rows = self->cap = 0;
+    self->now = NO_TIME;
+    self->failed = false;
+    memset(self->counts, 0, sizeof self->counts);
+    osdk_deframer_init(&self->deframer, self->window, sizeof self->window);
+    return 0;
+}
+
+static void Columns_dealloc(Columns *self)
+{
+    columns_free_arrays(self);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyMethodDef Columns_methods[] = {
+    {"feed", (PyCFunction)(void (*)(void))Columns_feed, METH_VARARGS | METH_KEYWORDS,
+     "feed(data, time_ns=None) -> rows so far. time_ns: the capture time of these bytes (ns since the Unix "
+     "epoch), for the frames they complete; None when the bytes came without one (a row's time is then "
+     "INT64_MIN)."},
+    {"finish", (PyCFunction)Columns_finish, METH_NOARGS, "finish() -> rows so far, the end of the input seen."},
+    {"schema", (PyCFunction)Columns_schema, METH_NOARGS,
+     "schema() -> ((name, item, element type, enum or None), ...), one per column, in the order of take()'s."},
+    {"take", (PyCFunction)Columns_take, METH_NOARGS,
+     "take() -> {'rows', 'data', 'valid', 'offset', 'time', 'counts'}: the rows made so far, as bytearrays; "
+     "the next rows start empty."},
+    {NULL, NULL, 0, NULL},
+};
+
+static PyTypeObject ColumnsType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "osdk_conformance.reference._accel.Columns",
+    .tp_basicsize = sizeof(Columns),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "Columns(profile): the broadcasts of a received stream as typed columns (osdk_columns.h).\n"
+              "profile is the u8 value of the wire profile (spec/rules.yaml).",
+    .tp_new = PyType_GenericNew,
+    .tp_init = (initproc)Columns_init,
+    .tp_dealloc = (destructor)Columns_dealloc,
+    .tp_methods = Columns_methods,
+};
+
 /* ---- single frames and payloads (the testee protocol's decode_frame / decode_payload) ------------ */
 
 static osdk_frame_t one_frame;
@@ -405,14 +765,15 @@ PyMODINIT_FUNC PyInit__accel(void)
     for (i = 0; i < TEXT_COUNT; i++) {
         if (text[i] == NULL && (text[i] = PyUnicode_InternFromString(text_values[i])) == NULL) return NULL;
     }
-    if (PyType_Ready(&DecoderType) < 0) return NULL;
+    if (PyType_Ready(&DecoderType) < 0 || PyType_Ready(&ColumnsType) < 0) return NULL;
     m = PyModule_Create(&accel_module);
     if (m == NULL) return NULL;
     DecodeError = PyErr_NewExceptionWithDoc("osdk_conformance.reference._accel.DecodeError",
                                             "A rejected frame or payload: args are (error class, detail).",
                                             PyExc_ValueError, NULL);
     if (DecodeError == NULL || PyModule_AddObjectRef(m, "DecodeError", DecodeError) < 0 ||
-        PyModule_AddObjectRef(m, "Decoder", (PyObject *)&DecoderType) < 0) {
+        PyModule_AddObjectRef(m, "Decoder", (PyObject *)&DecoderType) < 0 ||
+        PyModule_AddObjectRef(m, "Columns", (PyObject *)&ColumnsType) < 0) {
         Py_DECREF(m);
         return NULL;
     }

@@ -345,16 +345,25 @@ def capture_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozens
     `name` and the byte offset; an incomplete last block (a killed writer)
     is left out, as it is in `osdkc device --replay`, and noted in `seen`
     (when given, it notes everything that goes by: InputSeen)."""
+    return ((direction, data) for direction, data, _ in timed_pieces(chunks, directions, name, seen))
+
+
+def timed_pieces(chunks: Iterable[bytes], directions: frozenset[str] = frozenset({"rx"}),
+                 name: str = "capture", seen: InputSeen | None = None) -> Iterator[tuple[str, bytes, int | None]]:
+    """capture_pieces with each piece's capture time: (direction, bytes,
+    nanoseconds since the Unix epoch), the time the pcapng record carries
+    (when the kit's recorder read those bytes from the port); None for raw
+    bytes, which carry no time."""
     if seen is None:
         yield from _pieces(chunks, directions, name, InputSeen())
         return
-    for direction, data in _pieces(seen.count(chunks), directions, name, seen):
+    for direction, data, ts_ns in _pieces(seen.count(chunks), directions, name, seen):
         seen.piece(direction, data)
-        yield direction, data
+        yield direction, data, ts_ns
 
 
 def _pieces(chunks: Iterable[bytes], directions: frozenset[str], name: str,
-            seen: InputSeen) -> Iterator[tuple[str, bytes]]:
+            seen: InputSeen) -> Iterator[tuple[str, bytes, int | None]]:
     it = iter(chunks)
     first = next(it, b"")
     if not is_pcapng(first):
@@ -362,16 +371,16 @@ def _pieces(chunks: Iterable[bytes], directions: frozenset[str], name: str,
             raise UsageError(f"{name}: raw bytes hold only what was received; "
                              "--direction tx or both needs a pcapng capture (osdkc device --capture)")
         if first:
-            yield "rx", first
+            yield "rx", first, None
         for chunk in it:
-            yield "rx", chunk
+            yield "rx", chunk, None
         return
     seen.pcapng = True
     reader = CaptureReader(chain([first], it), name)
     try:
         for rec in reader:
             if NAMES[rec.direction] in directions:
-                yield NAMES[rec.direction], rec.data
+                yield NAMES[rec.direction], rec.data, rec.ts_ns
     except CaptureError as e:
         raise UsageError(str(e)) from None
     seen.cut_block = reader.partial_tail
@@ -389,22 +398,10 @@ def decode_events(chunks: Iterable[bytes], profile: str) -> Iterator[dict]:
 
 
 def both_directions_events(chunks: Iterable[bytes], profile: str, name: str) -> Iterator[dict]:
-    """The events of both directions of a capture, each marked with its
-    direction, in capture order. Each direction is deframed on its own (its
-    offsets count its own bytes); one decoder sees both, so an ACK the flight
-    controller sent is matched with the command the host sent."""
-    return _both_events(capture_pieces(chunks, frozenset({"rx", "tx"}), name), profile)
-
-
-def _both_events(pieces: Iterable[tuple[str, bytes]], profile: str) -> Iterator[dict]:
-    decoder = Decoder(profile)
-    deframers = {"rx": Deframer(), "tx": Deframer()}
-    for direction, data in pieces:
-        for ev in deframers[direction].feed(data):
-            yield {"direction": direction, **decoder.event(ev)}
-    for direction, d in deframers.items():
-        for ev in d.finish():
-            yield {"direction": direction, **decoder.event(ev)}
+    """The reference's events of both directions of a capture, each marked
+    with its direction, in capture order (see timed_events)."""
+    pieces = timed_pieces(chunks, frozenset({"rx", "tx"}), name)
+    return (ev for ev, _ in _reference_events(pieces, profile, ("rx", "tx"), True))
 
 
 def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input",
@@ -412,24 +409,50 @@ def stream_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", 
     """What `osdkc decode` prints for --direction rx, tx or both: the native
     decoder's events when it is to run (accel.py), else the reference's.
     `seen`, when given, notes what the input held (InputSeen)."""
+    return (ev for ev, _ in timed_events(chunks, profile, direction, name, seen))
+
+
+def timed_events(chunks: Iterable[bytes], profile: str, direction: str = "rx", name: str = "input",
+                 seen: InputSeen | None = None) -> Iterator[tuple[dict, int | None]]:
+    """stream_events, each event with the capture time (ns since the Unix
+    epoch) of the pcapng record whose bytes completed it, None for raw
+    bytes. The events the end of the input leaves (a frame the recording
+    stopped inside) get the time of the last record. With --direction both,
+    each direction is deframed on its own (its offsets count its own bytes)
+    and one decoder sees both, so an ACK the flight controller sent is
+    matched with the command the host sent; the received direction is
+    finished first."""
+    both = direction == "both"
+    pieces = timed_pieces(chunks, frozenset({"rx", "tx"}) if both else frozenset({direction}), name, seen)
     native = accel.stream(profile)
-    if direction == "both":
-        pieces = capture_pieces(chunks, frozenset({"rx", "tx"}), name, seen)
-        if native is None:
-            return _both_events(pieces, profile)
-        return _native_both(native, pieces)
-    pieces = capture_pieces(chunks, frozenset({direction}), name, seen)
-    if native is None:
-        return decode_events((data for _, data in pieces), profile)
-    return accel.events((data for _, data in pieces), native)
+    tag = (lambda d: d) if both else (lambda d: None)
+    ends = ("rx", "tx") if both else (direction,)
+    last: int | None = None
+    if native is not None:
+        for d, data, ts in pieces:
+            last = ts
+            for ev in native.feed(data, tag(d)):
+                yield ev, ts
+        for d in ends:
+            for ev in native.finish(tag(d)):
+                yield ev, last
+        return
+    yield from _reference_events(pieces, profile, ends, both)
 
 
-def _native_both(native: accel.NativeStream, pieces: Iterable[tuple[str, bytes]]) -> Iterator[dict]:
-    # as both_directions_events: one receiver per direction, one ACK table, rx finished first
-    for direction, data in pieces:
-        yield from native.feed(data, direction)
-    for direction in ("rx", "tx"):
-        yield from native.finish(direction)
+def _reference_events(pieces: Iterable[tuple[str, bytes, int | None]], profile: str, ends: tuple[str, ...],
+                      both: bool) -> Iterator[tuple[dict, int | None]]:
+    decoder = Decoder(profile)
+    deframers = {d: Deframer() for d in ends}
+    mark = (lambda d, ev: {"direction": d, **ev}) if both else (lambda d, ev: ev)
+    last: int | None = None
+    for d, data, ts in pieces:
+        last = ts
+        for ev in deframers[d].feed(data):
+            yield mark(d, decoder.event(ev)), ts
+    for d in ends:
+        for ev in deframers[d].finish():
+            yield mark(d, decoder.event(ev)), last
 
 
 class DecodeFailure(ValueError):

@@ -35,6 +35,9 @@ from osdk_conformance._construct.floats import F32le
 
 __all__ = ["Leaf", "items", "layout", "fields", "rest", "fit", "cut", "broadcast_data"]
 
+# The time_stamp item's `time` counts ticks of 1/400 s (spec/osdk_broadcast_items.ksy).
+FC_TICKS_PER_S = 400
+
 _ABSENT = object()   # a field whose condition is false: left out of the value
 _UNSET = object()    # no value given: the rest value is used
 

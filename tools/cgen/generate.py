@@ -48,6 +48,8 @@ BANNER = "/* Generated from spec/ by tools/cgen/generate.py. Do not edit. */\n"
 # CRC-16 always first (when it fails the other fields mean nothing) and
 # without the start byte, which the hunt for it already guarantees.
 FRAME_TYPE = "osdk_frame"
+# The payload type whose switch on the profile holds each profile's broadcast layout.
+BROADCAST_TYPE = "osdk_payload::broadcast"
 
 # docs/VALUE-MODEL.md, error classes, in the table's order; the classes of
 # error_by_field are added if one is missing here.
@@ -1002,16 +1004,121 @@ class Generator:
             c()
         return h.text(), c.text()
 
+    # ---- the broadcast as columns (for tables) ------------------------------------------
+
+    def broadcast_switch(self) -> tuple[TypeSpec, FieldSpec]:
+        """The payload's broadcast type and its data switch, whose cases are the profiles' layouts."""
+        for t in self.types:
+            if t.ksy_name == BROADCAST_TYPE:
+                for f in t.fields:
+                    if f.kind == "switch":
+                        return t, f
+        raise GenError(f"{BROADCAST_TYPE}: no switch on the profile")
+
+    def column_leaves(self, t: TypeSpec, access: str, prefix: str, present: list[str], item: Optional[str],
+                      out: list[dict]) -> None:
+        """Every leaf of `t` as a column: its dotted name, its item (the root's field),
+        its element type, its enum, the C expression of its value and of its presence.
+        At the root the flag bits that only say whether an item is there (the fields
+        that other fields' `if` name) and the checked fields are left out: a column's
+        validity already says it."""
+        conds = {n for g in t.fields if g.cond is not None for n in names_used(g.cond)}
+        checked = set(self.tables["checked_fields"].get(t.cname, ()))
+        for f in t.fields:
+            if f.id in self.skipped or (item is None and (f.id in conds or f.id in checked)):
+                continue
+            name, here = prefix + f.id, present + ([f"{access}{self.present(f.id)}"] if f.cond is not None else [])
+            leaf_item = item or f.id
+            if f.repeat is not None or f.kind in ("bytes", "contents", "switch"):
+                raise GenError(f"{t.ksy_name}.{f.id}: a broadcast column cannot hold a {f.kind}")
+            if f.kind == "struct":
+                self.column_leaves(f.ref.target, f"{access}{f.id}.", name + ".", here, leaf_item, out)
+                continue
+            if f.kind == "float":
+                ctype, code, value = ("uint32_t", "F32", f"{access}{f.id}.bits") if f.width == 4 else \
+                                     ("uint64_t", "F64", f"{access}{f.id}.bits")
+            elif f.is_bool:
+                ctype, code, value = "uint8_t", "BOOL", f"{access}{f.id}"
+            else:
+                bits = 8 * f.width if f.kind == "int" else max(8, 1 << (f.width - 1).bit_length())
+                signed = f.kind == "int" and f.signed
+                ctype = f"{'int' if signed else 'uint'}{bits}_t"
+                code, value = f"{'I' if signed else 'U'}{bits}", f"{access}{f.id}"
+            out.append({"name": name, "item": leaf_item, "ctype": ctype, "code": code,
+                        "enum": f.enum.key if f.enum is not None else None, "value": value,
+                        "present": " && ".join(here) or "true"})
+
+    def gen_columns(self) -> tuple[str, str]:
+        """The broadcast of each profile as one row of typed columns (osdk_columns.h)."""
+        bt, sw = self.broadcast_switch()
+        profile_enum = next(p.enum for p in bt.params if p.id == sw.switch_on)
+        value_of = {name: value for value, name in profile_enum.values}
+        h, c = Lines(), Lines()
+        by_profile: list[tuple[int, str, TypeSpec]] = []
+        for case in sw.cases:
+            key = str(case.key)
+            enum_name = key.split("::")[-1]
+            if enum_name not in value_of:
+                raise GenError(f"{bt.ksy_name}.{sw.id}: case {key} is not a value of {profile_enum.key}")
+            by_profile.append((value_of[enum_name], self.switch_tag(bt, sw, case.type.target.name), case.type.target))
+        for _, _, t in by_profile:
+            leaves: list[dict] = []
+            self.column_leaves(t, "self->", "", [], None, leaves)
+            items = list(dict.fromkeys(leaf["item"] for leaf in leaves))
+            c(f"/* {t.ksy_name} */")
+            c(f"static const osdk_column_t {t.cname}_columns[{len(leaves)}] = {{")
+            for leaf in leaves:
+                enum = c_string(leaf["enum"]) if leaf["enum"] else "NULL"
+                c(f"    {{{c_string(leaf['name'])}, {items.index(leaf['item'])}, OSDK_COL_{leaf['code']}, {enum}}},")
+            c("};")
+            c(f"static const char *const {t.cname}_items[{len(items)}] = {{{', '.join(c_string(i) for i in items)}}};")
+            c(f"static const osdk_column_set_t {t.cname}_column_set = "
+              f"{{{t.cname}_columns, {len(leaves)}, {t.cname}_items, {len(items)}}};")
+            c()
+            c.func(f"static void {t.cname}_row(const {t.cname}_t *self, void *const *cols, uint8_t *const *valid, size_t row)")
+            c("bool p;")
+            for i, leaf in enumerate(leaves):
+                c(f"p = {leaf['present']};")
+                c(f"(({leaf['ctype']} *)cols[{i}])[row] = p ? ({leaf['ctype']}){leaf['value']} : 0;")
+                c(f"valid[{i}][row] = p;")
+            c.close()
+            c()
+        c.func("const osdk_column_set_t *osdk_broadcast_columns(uint8_t profile)")
+        c.open("switch (profile) {")
+        for value, _, t in by_profile:
+            c(f"case {value}: return &{t.cname}_column_set;")
+        c("default: return NULL;")
+        c.close()
+        c.close()
+        c()
+        c.func(f"bool osdk_broadcast_row(const {bt.cname}_t *b, void *const *cols, uint8_t *const *valid, size_t row)")
+        c.open(f"switch (b->{sw.id}.tag) {{")
+        for _, tag, t in by_profile:
+            c(f"case {tag}: {t.cname}_row(&b->{sw.id}.u.{t.name}, cols, valid, row); return true;")
+        c("default: return false;")
+        c.close()
+        c.close()
+        h(f"/* The columns of the broadcast of `profile` (a value of {profile_enum.key}), NULL for none. */")
+        h("const osdk_column_set_t *osdk_broadcast_columns(uint8_t profile);")
+        h()
+        h("/* Writes a decoded broadcast as row `row` of the columns of its profile: cols[i] is")
+        h(" * column i's array of its element type, valid[i] its presence bytes (1 present, 0")
+        h(" * absent; an absent value is written as 0). False when `b` holds no layout. */")
+        h(f"bool osdk_broadcast_row(const {bt.cname}_t *b, void *const *cols, uint8_t *const *valid, size_t row);")
+        return h.text(), c.text()
+
     def render_python(self) -> dict[str, str]:
         """The files of generated/cpython/: the value model as Python objects."""
         keys = self.py_keys()
         py_h, py_c = self.gen_py()
+        columns_h, columns_c = self.gen_columns()
         values = {
             "banner": BANNER,
             "key_enum": "\n".join(f"    OSDK_PY_K_{k.upper()} = {i}," for i, k in enumerate(keys)),
             "key_count": str(len(keys)),
             "key_names": self._wrap([c_string(k) for k in keys], per=6),
             "py_h": py_h, "py_c": py_c,
+            "columns_h": columns_h, "columns_c": columns_c,
         }
         files = {}
         for tpl in sorted((TEMPLATES / "cpython").glob("*.in")):
