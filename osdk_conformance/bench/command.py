@@ -53,7 +53,7 @@ import sys
 import time
 from pathlib import Path
 
-from osdk_conformance.bench import api_decode as bench_api, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, doctor_faults as bench_doctor, tap_hosts as bench_tap, report as bench_report, sections as bench_sections
+from osdk_conformance.bench import api_decode as bench_api, flight_data as bench_flight, corpus as bench_corpus, decode as bench_decode, footprint as bench_footprint, reliability as bench_reliability, doctor_faults as bench_doctor, tap_hosts as bench_tap, report as bench_report, sections as bench_sections
 from osdk_conformance.bench.corpus import CORPORA
 from osdk_conformance.bench.decode import impl_names
 from osdk_conformance.bench.reliability import FAULT_CASES
@@ -211,6 +211,10 @@ def run_bench(args: argparse.Namespace) -> int:
             hour = bench_corpus.corpus(HOUR_CORPUS, args.corpus_seconds or (QUICK_CORPUS_SECONDS if args.quick else None))
         _log(f"api: {hour.name} through the Python API and osdkc decode, native and pure Python")
         result["api"] = bench_api.measure(hour, args.timeout)
+        _log(f"api: {hour.name} into an Arrow table, typed records and osdkc decode --format csv")
+        flight = bench_flight.measure(hour, args.timeout)
+        result["api"]["flight"] = flight
+        result["api"]["ok"] = result["api"]["ok"] and flight["ok"]
     if "run" in sections:
         _log("run: osdkc run --impl all")
         result["run"] = bench_sections.conformance_run(args.timeout)

@@ -148,6 +148,22 @@ def _api_targets(api: dict | None) -> list[dict]:
                 "measured": (f"{row['decode_json_seconds'] * k:.1f} s{note}, {share:.0%} of it writing JSON"
                              if share is not None else "not measured"),
                 "met": share > 0.5 if share is not None else None})
+    return out + _flight_targets(api.get("flight"))
+
+
+def _flight_targets(fl: dict | None) -> list[dict]:
+    if fl is None:
+        return []
+    k = HOUR / fl["corpus_seconds"]
+    note = "" if fl["corpus_seconds"] == HOUR else f" (extrapolated from {fl['corpus_seconds']:g} s)"
+    out = []
+    for key, what, limit in (("table_seconds", "into an Arrow table (`api.table`, every column)", 0.5),
+                             ("records_seconds", "into typed Python records (`api.broadcasts`, two fields read)", 2.0),
+                             ("csv_seconds", "through `osdkc decode --format csv` (start-up included)", 5.0)):
+        secs = fl[key] * k if key in fl else None
+        out.append({"target": f"one hour of a3-fw3.1 {what}, in < {limit:g} s",
+                    "measured": f"{secs:.2f} s{note}" if secs is not None else f"not measured ({fl.get('error')})",
+                    "met": secs < limit if secs is not None else None})
     return out
 
 
@@ -211,6 +227,13 @@ def _others(result: dict) -> list[tuple[str, str, str]]:
             rows.append((f"{api['corpus']} ({api['corpus_seconds']:g} s of traffic), {r['decoder']}",
                          f"OSDKC_ACCEL={'1' if r['decoder'] == 'native' else '0'} osdkc decode --profile "
                          f"{api['profile']} FILE", text + (f"; FAILED: {r['error']}" if "error" in r else "")))
+        if fl := api.get("flight"):
+            text = (f"Arrow table {fl['table_seconds']:.2f} s ({fl['rows']:,} rows x {fl['columns']} columns); typed "
+                    f"records {fl['records_seconds']:.2f} s; osdkc decode --format csv {fl.get('csv_seconds', '–')} s"
+                    if "table_seconds" in fl else "")
+            rows.append((f"{fl['corpus']} ({fl['corpus_seconds']:g} s of traffic), flight data",
+                         f"osdkc decode --profile {api['profile']} --format csv FILE",
+                         text + (f"; FAILED: {fl['error']}" if "error" in fl else "")))
     if run := result.get("run"):
         per = ", ".join(f"{k} {v:.0f} s" for k, v in (run.get("per_impl_seconds") or {}).items() if v is not None)
         rows.append(("conformance run", run["command"],

@@ -81,78 +81,135 @@ def _converter(c: Column):
     return named
 
 
-class _Leaf(NamedTuple):
-    column: Column
-    values: Any      # numpy array in the column's type
-    valid: Any       # numpy bool array
-    convert: Any     # numpy scalar's Python value -> the typed value
-    raw: Any         # the stored array (a float's bits)
+class _Leaf:
+    """One column as records read it: made into a list of Python values the
+    first time any record reads it (a column read at all is read for every
+    row, and indexing a list is many times cheaper than a numpy scalar)."""
+
+    __slots__ = ("column", "_data", "_values", "_valid")
+
+    def __init__(self, column: Column, data: FlightData) -> None:
+        self.column, self._data = column, data
+        self._values: list | None = None
+        self._valid: list | None = None
+
+    def value(self, row: int) -> Any:
+        if self._values is None:
+            self._load()
+        return self._values[row] if self._valid[row] else None  # type: ignore[index]
+
+    def present(self) -> list:
+        if self._valid is None:
+            self._load()
+        return self._valid  # type: ignore[return-value]
+
+    def bits(self, row: int) -> int:
+        return int(self._data.raw(self.column.name)[row])
+
+    def _load(self) -> None:
+        values = self._data.values(self.column.name).tolist()
+        convert = _converter(self.column)
+        if convert not in (bool, float, int):
+            values = [convert(v) for v in values]
+        self._valid = self._data.valid(self.column.name).tolist()
+        self._values = values
+
+
+class _Node:
+    """A structure of the layout: its fields (leaves or structures), and where
+    it is present (any of its leaves is: an optional part of it may be absent)."""
+
+    __slots__ = ("name", "fields", "_data", "_present")
+
+    def __init__(self, name: str, data: FlightData) -> None:
+        self.name, self._data = name, data
+        self.fields: dict[str, _Leaf | _Node] = {}
+        self._present: list | None = None
+
+    def leaves(self) -> Iterator[_Leaf]:
+        for f in self.fields.values():
+            yield from (f.leaves() if isinstance(f, _Node) else (f,))
+
+    def present(self) -> list:
+        if self._present is None:   # the leaves' masks, OR-ed once
+            mask = None
+            for leaf in self.leaves():
+                v = self._data.valid(leaf.column.name)
+                mask = v.copy() if mask is None else mask | v
+            self._present = mask.tolist() if mask is not None else []
+        return self._present
+
+    def get(self, field: str, row: int) -> Any:
+        try:
+            f = self.fields[field]
+        except KeyError:
+            raise AttributeError(f"{self.name} has no field {field!r} (its fields: {', '.join(self.fields)})") from None
+        if isinstance(f, _Node):
+            return Item(f, row) if f.present()[row] else None
+        return f.value(row)
 
 
 class _Shape:
-    """Per FlightData: for each item, its one column or its tree of fields."""
+    """Per FlightData: the tree of items and fields over its columns, and a
+    record class for it whose items and fields are properties (an attribute
+    found on the class costs a fraction of a __getattr__ fallback)."""
 
     def __init__(self, data: FlightData) -> None:
-        self.tree: dict[str, Any] = {}
+        self.root = _Node(data.profile, data)
         for c in data.columns:
-            node = self.tree
+            node = self.root
             parts = c.name.split(".")
-            for part in parts[:-1]:
-                node = node.setdefault(part, {})
-            node[parts[-1]] = _Leaf(c, data.values(c.name), data.valid(c.name), _converter(c), data.raw(c.name))
+            for i, part in enumerate(parts[:-1]):
+                nxt = node.fields.get(part)
+                if nxt is None:
+                    nxt = node.fields[part] = _Node(".".join(parts[:i + 1]), data)
+                node = nxt  # type: ignore[assignment]
+            node.fields[parts[-1]] = _Leaf(c, data)
+        self.record_class = _typed(Broadcast, "Broadcast", self.root)
 
 
-def _value(leaf: _Leaf, row: int) -> Any:
-    if not leaf.valid[row]:
-        return None
-    return leaf.convert(leaf.values[row].item())
+def _getter(field: _Leaf | _Node) -> property:
+    if isinstance(field, _Leaf):
+        return property(lambda self: field.value(self._row))
+    cls = _typed(Item, field.name.replace(".", "_"), field)
+    return property(lambda self: cls(field, self._row) if field.present()[self._row] else None)
+
+
+def _typed(base: type, name: str, node: _Node) -> type:
+    return type(name, (base,), {"__slots__": (), **{k: _getter(f) for k, f in node.fields.items()}})
 
 
 class Item:
-    """One item of one broadcast: its fields as attributes."""
+    """One item (or sub-structure) of one broadcast: its fields as attributes."""
 
-    __slots__ = ("_node", "_row", "_name")
+    __slots__ = ("_node", "_row")
 
-    def __init__(self, node: dict, row: int, name: str) -> None:
-        self._node, self._row, self._name = node, row, name
+    def __init__(self, node: _Node, row: int) -> None:
+        self._node, self._row = node, row
 
     def __getattr__(self, field: str) -> Any:
-        try:
-            leaf = self._node[field]
-        except KeyError:
-            raise AttributeError(f"{self._name} has no field {field!r} (its fields: "
-                                 f"{', '.join(self._node)})") from None
-        if isinstance(leaf, dict):
-            return Item(leaf, self._row, f"{self._name}.{field}") if _present(leaf, self._row) else None
-        return _value(leaf, self._row)
+        # only for names the item's class has no property of
+        raise AttributeError(f"{self._node.name} has no field {field!r} (its fields: {', '.join(self._node.fields)})")
 
     def bits(self, field: str) -> int:
         """A float field's IEEE bits, exactly as received."""
-        leaf = self._node.get(field)
+        leaf = self._node.fields.get(field)
         if not isinstance(leaf, _Leaf) or leaf.column.kind not in ("f32", "f64"):
-            raise AttributeError(f"{self._name}.{field} is not a float field")
-        return int(leaf.raw[self._row])
+            raise AttributeError(f"{self._node.name}.{field} is not a float field")
+        return leaf.bits(self._row)
 
     def as_dict(self) -> dict[str, Any]:
-        return {k: (getattr(self, k).as_dict() if isinstance(self._node[k], dict) and getattr(self, k) is not None
-                    else getattr(self, k)) for k in self._node}
+        out = {}
+        for k in self._node.fields:
+            v = getattr(self, k)
+            out[k] = v.as_dict() if isinstance(v, Item) else v
+        return out
 
     def __dir__(self) -> list[str]:
-        return list(self._node)
+        return list(self._node.fields)
 
     def __repr__(self) -> str:
-        return f"{self._name}({', '.join(f'{k}={v!r}' for k, v in self.as_dict().items())})"
-
-
-def _present(node: dict, row: int) -> bool:
-    # a sub-structure is there when any of its leaves is (an optional part of it may be absent)
-    for leaf in node.values():
-        if isinstance(leaf, dict):
-            if _present(leaf, row):
-                return True
-        elif leaf.valid[row]:
-            return True
-    return False
+        return f"{self._node.name}({', '.join(f'{k}={v!r}' for k, v in self.as_dict().items())})"
 
 
 class Broadcast:
@@ -164,14 +221,9 @@ class Broadcast:
         self._data, self._shape, self._row = data, shape, row
 
     def __getattr__(self, item: str) -> Any:
-        try:
-            node = self._shape.tree[item]
-        except KeyError:
-            raise AttributeError(f"the {self._data.profile} broadcast has no item {item!r} (its items: "
-                                 f"{', '.join(self._data.items)})") from None
-        if isinstance(node, dict):
-            return Item(node, self._row, item) if _present(node, self._row) else None
-        return _value(node, self._row)
+        # only for names the record class has no property of: every item and field is one
+        raise AttributeError(f"the {self._data.profile} broadcast has no item {item!r} (its items: "
+                             f"{', '.join(self._data.items)})")
 
     @property
     def offset(self) -> int:
@@ -189,23 +241,24 @@ class Broadcast:
 
     @property
     def fc_time(self) -> float | None:
-        leaf = self._shape.tree.get(FC_TIME_COLUMN.split(".")[0], {}).get(FC_TIME_COLUMN.split(".")[1])
-        ticks = _value(leaf, self._row) if leaf is not None else None
+        item, field = FC_TIME_COLUMN.split(".")
+        stamp = self._shape.root.fields.get(item)
+        ticks = stamp.get(field, self._row) if isinstance(stamp, _Node) else None
         return None if ticks is None else ticks / FC_TICKS_PER_S
 
     @property
     def attitude(self) -> Attitude | None:
-        q = self.quaternion if "quaternion" in self._shape.tree else None
+        q = self.quaternion if "quaternion" in self._shape.root.fields else None
         return None if q is None else attitude_of(q.q0, q.q1, q.q2, q.q3)
 
     @property
     def position_deg(self) -> LatLon | None:
-        p = self.position if "position" in self._shape.tree else None
+        p = self.position if "position" in self._shape.root.fields else None
         return None if p is None else LatLon(math.degrees(p.latitude), math.degrees(p.longitude))
 
     @property
     def speed(self) -> float | None:
-        v = self.velocity if "velocity" in self._shape.tree else None
+        v = self.velocity if "velocity" in self._shape.root.fields else None
         return None if v is None else math.sqrt(v.x * v.x + v.y * v.y + v.z * v.z)
 
     def as_dict(self) -> dict[str, Any]:
@@ -226,5 +279,6 @@ class Broadcast:
 def records(data: FlightData) -> Iterator[Broadcast]:
     """The rows of `data` as Broadcast records, in capture order."""
     shape = _Shape(data)
+    make = shape.record_class
     for row in range(data.rows):
-        yield Broadcast(data, shape, row)
+        yield make(data, shape, row)
