@@ -44,6 +44,8 @@ GROUPS = {
 COMMANDS = (
     Command(("decode",), "find and decode frames in a byte stream, one JSON object per line (or the broadcasts "
                          "as a CSV or Parquet table)", "flight.decode_command", "run_decode"),
+    Command(("watch",), "a live view of the broadcast: each item's rate and latest values, the link's errors, "
+                        "updated in place", "flight.watch_command", "run_watch"),
     Command(("plot",), "draw the flight data of a capture (battery, attitude, velocity, any item) as HTML or SVG",
             "flight.plot_command", "run_plot"),
     Command(("spec", "trace"), "map every seed entry to the spec element that carries it",

@@ -230,6 +230,8 @@ LINES: dict[str, dict[str, object]] = {
         "osdkc decode --profile a3-fw3.1 --direction both run.pcapng": RUN,
         "osdkc decode --profile a3-fw3.1 --format csv --items battery,quaternion run.pcapng > flight.csv": RUN,
         "osdkc plot run.pcapng --profile a3-fw3.1 --items battery,attitude -o flight.html": RUN,
+        "osdkc watch --port /dev/ttyUSB0 --profile a3-fw3.1": FC,
+        "osdkc decode --profile a3-fw3.1 --port /dev/ttyUSB0": FC,
         "osdkc spec trace --seed FILE": NotRun("needs the seed"),
         "osdkc spec check": Elsewhere("tests/test_lone_clone.py", ('"osdk_conformance.cli", "spec", "check")',)),
         "osdkc vectors check": Elsewhere("tests/test_vectors.py", ('osdkc("vectors", "check")',)),

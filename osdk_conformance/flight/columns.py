@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
-from typing import Iterable, Iterator
+from typing import Iterable
 
 import numpy as np
 
@@ -165,29 +165,32 @@ def read(source: str | os.PathLike | bytes | bytearray | memoryview, profile: st
 
 
 def read_chunks_of(chunks: Iterable[bytes], profile: str, name: str) -> FlightData:
-    filler = _native().Columns(load_profile(profile).value)
+    filler = open_filler(profile)
     seen = InputSeen()
     timed = False
     for _, data, ts_ns in timed_pieces(chunks, frozenset({"rx"}), name, seen):
         timed = timed or ts_ns is not None
-        _feed(filler, data, ts_ns)
+        feed(filler, data, ts_ns)
     filler.finish()
-    columns = tuple(Column(n, item, kind, enum) for n, item, kind, enum in filler.schema())
-    return FlightData(profile, columns, filler.take(), name, timed, seen)
+    return take(filler, profile, schema_of(filler), name, timed, seen)
 
 
-def _feed(filler, data: bytes, ts_ns: int | None) -> None:
+def open_filler(profile: str):
+    """The native decoder's columns of one received stream (reference/_accel.c, Columns)."""
+    return _native().Columns(load_profile(profile).value)
+
+
+def schema_of(filler) -> tuple[Column, ...]:
+    return tuple(Column(n, item, kind, enum) for n, item, kind, enum in filler.schema())
+
+
+def feed(filler, data: bytes, ts_ns: int | None) -> None:
     view = memoryview(data)
     for start in range(0, len(view), accel.SLICE):   # a few KiB at a time stay in the caches
         filler.feed(view[start:start + accel.SLICE], ts_ns)
 
 
-def follow(pieces: Iterable[tuple[bytes, int | None]], profile: str) -> Iterator[FlightData]:
-    """Columns of a live stream, a batch per piece fed: (bytes, capture time ns or None)
-    in, the rows those bytes completed out (`osdkc watch`)."""
-    filler = _native().Columns(load_profile(profile).value)
-    columns = tuple(Column(n, item, kind, enum) for n, item, kind, enum in filler.schema())
-    seen = InputSeen()
-    for data, ts_ns in pieces:
-        _feed(filler, data, ts_ns)
-        yield FlightData(profile, columns, filler.take(), "stream", ts_ns is not None, seen)
+def take(filler, profile: str, schema: tuple[Column, ...], name: str = "stream", timed: bool = True,
+         seen: InputSeen | None = None) -> FlightData:
+    """The rows filled since the last take (a live stream's batch), as FlightData."""
+    return FlightData(profile, schema, filler.take(), name, timed, seen or InputSeen())

@@ -13,17 +13,26 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+import threading
 from typing import IO, Sequence
 
 from osdk_conformance.core.errors import UsageError, cannot_read
+from osdk_conformance.core.options import baud_rate
+from osdk_conformance.flight import live
 from osdk_conformance.reference import decode as json_lines
 from osdk_conformance.reference.decode import parse_hex, read_chunks
 
 FORMATS = ("jsonl", "csv", "parquet")
+DEFAULT_BAUD = 230400
 
 
 def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
-    json_lines.add_arguments(d, profiles)
+    sources = json_lines.add_arguments(d, profiles)
+    sources.add_argument("--port", help="decode a serial port as the bytes arrive (a path or a pyserial URL), until "
+                                        "Ctrl-C")
+    d.add_argument("--baud", type=baud_rate, default=DEFAULT_BAUD, help=f"with --port: the baud rate ({DEFAULT_BAUD})")
+    d.add_argument("--follow", action="store_true",
+                   help="with FILE: keep reading as the file grows (a capture being written), until Ctrl-C")
     d.add_argument("--format", choices=FORMATS, default="jsonl",
                    help="jsonl (default): every event in the value model; csv or parquet: the broadcast frames as "
                         "a table, one column per field (needs the optional dependencies: pip install "
@@ -35,12 +44,34 @@ def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
 
 
 def run_decode(args: argparse.Namespace) -> int:
+    if args.follow and not args.file or args.follow and args.file == "-":
+        raise UsageError("--follow is for a FILE that is being written")
+    if args.port or args.follow:
+        if args.format != "jsonl":
+            raise UsageError("--port and --follow give JSON lines as frames arrive (a table is written when its "
+                             "input ends: record with `osdkc device --capture`, then --format it)")
+        return _run_live(args)
     if args.format == "jsonl":
         for option, given in (("--items", args.items), ("--output", args.output)):
             if given is not None:
                 raise UsageError(f"{option} is for --format csv or parquet; the JSON lines hold every event")
         return json_lines.run_decode(args)
     return _run_table(args)
+
+
+def _run_live(args: argparse.Namespace) -> int:
+    stop = threading.Event()
+    if args.port:
+        ser = live.open_port(args.port, args.baud)
+        name, pieces = args.port, live.port_pieces(ser, args.port, args.baud, stop)
+    else:
+        if not os.path.exists(args.file):
+            raise UsageError(f"cannot read {args.file}: no such file")
+        name, pieces = args.file, live.follow_pieces(args.file, stop)
+    try:
+        return json_lines.run_decode(args, (name, (data for data, _ in pieces), None), live=True)
+    finally:
+        stop.set()
 
 
 def _items(text: str | None) -> list[str] | None:

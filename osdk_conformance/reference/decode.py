@@ -519,7 +519,8 @@ EPILOG = ("exit status: 0 when every frame decoded; 1 when an error event was co
           "\"capture_end\": true and is not counted; --hex bytes are taken as given, a frame they cut short counts.")
 
 
-def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
+def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> argparse._MutuallyExclusiveGroup:
+    """The options; returns the group of the input's sources, which takes one."""
     d.epilog = EPILOG
     d.add_argument("--profile", required=True, choices=profiles, help="broadcast wire profile of the flight controller")
     src = d.add_mutually_exclusive_group(required=True)
@@ -528,6 +529,7 @@ def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     d.add_argument("--direction", choices=("rx", "tx", "both"), default="rx",
                    help="of a capture: bytes received (default), sent, or both, each event marked with its direction")
     d.add_argument("--pretty", action="store_true", help="indent each JSON object")
+    return src
 
 
 def _whole_frame(ev: dict) -> bool:
@@ -668,8 +670,12 @@ def _open_input(args: argparse.Namespace) -> tuple[str, Iterable[bytes], IO[byte
     raise UsageError("give --hex HEX, a FILE, or - for standard input")
 
 
-def run_decode(args: argparse.Namespace) -> int:
-    name, source, close = _open_input(args)
+def run_decode(args: argparse.Namespace, opened: tuple[str, Iterable[bytes], IO[bytes] | None] | None = None,
+               live: bool = False) -> int:
+    """`osdkc decode` to JSON lines; `opened` is the input when the caller
+    opened it (name, chunks, file to close); `live` flushes each event as it
+    comes (a port, a growing file)."""
+    name, source, close = opened or _open_input(args)
     # A file or standard input is a recording: where it ends, the recording
     # stopped, whatever the device was sending. --hex is exactly the bytes
     # the user meant; a frame they cut short is theirs to see as an error.
@@ -684,6 +690,8 @@ def run_decode(args: argparse.Namespace) -> int:
         for ev in events:
             tally.add(ev)
             sys.stdout.write(model.dumps(ev, indent=indent) + "\n")
+            if live:
+                sys.stdout.flush()
     except BrokenPipeError:
         raise
     except OSError as e:
