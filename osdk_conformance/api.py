@@ -56,6 +56,7 @@ from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, 
 from osdk_conformance.harness.vectors import Case, compare as judge, load_checked_cases
 from osdk_conformance.reference import codec, values
 from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, timed_events
+from osdk_conformance.flight import extra as flight_extra
 from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
 from osdk_conformance.device.checks import Options as _DeviceOptions
@@ -334,16 +335,11 @@ def decode_file(path: str | os.PathLike[str], profile: str, *, direction: Direct
 
 # ---------------------------------------------------------------- flight data
 
-FLIGHT_EXTRA = "pip install 'osdk-conformance[flight]'"
-
-
 def _flight():
     try:
-        # numpy and pyarrow are the optional `flight` extra, and cost start-up time: imported when asked for
-        from osdk_conformance.flight import columns, plot, records, tables
-    except ImportError as e:
-        raise InputError(f"flight data needs numpy and pyarrow ({one_line(e)}): {FLIGHT_EXTRA}") from None
-    return columns, records, tables, plot
+        return flight_extra.load("columns", "records", "tables", "plot")
+    except UsageError as e:
+        raise InputError(str(e)) from None
 
 
 def _flight_source(source: object, profile: str) -> Any:

@@ -387,3 +387,23 @@ def test_ctrl_c_stops_a_table_being_read_from_a_pipe_and_leaves_no_file(tmp_path
     assert time.monotonic() - t0 < 2.0
     assert proc.returncode == 130 and b"Traceback" not in err, err
     assert not out.exists() and not (tmp_path / "live.parquet.partial").exists()
+
+
+def test_without_the_flight_extra_each_command_says_what_to_install(flight_capture, tmp_path) -> None:
+    # a numpy that cannot be imported stands for an install without the extra
+    fake = tmp_path / "no-extra" / "numpy"
+    fake.mkdir(parents=True)
+    (fake / "__init__.py").write_text("raise ImportError('No module named numpy')\n")
+    env = {"PYTHONPATH": str(fake.parent)}
+    for args in (["decode", "--profile", A3, "--format", "csv", str(flight_capture)],
+                 ["plot", str(flight_capture), "--profile", A3, "-o", str(tmp_path / "p.html")],
+                 ["watch", "--capture", str(flight_capture), "--profile", A3, "--duration", "0.1"]):
+        done = osdkc(*args, env=env)
+        assert done.returncode == 2 and "pip install 'osdk-conformance[flight]'" in done.stderr, (args, done.stderr)
+        assert "Traceback" not in done.stderr and len(done.stderr.strip().splitlines()) == 1, done.stderr
+    plain = osdkc("decode", "--profile", A3, str(flight_capture), env=env)   # the JSON lines need nothing of it
+    assert plain.returncode == 0 and plain.stdout.count("\n") == 202, plain.stderr
+    api_use = subprocess.run([sys.executable, "-c", "from osdk_conformance import api\ntry:\n    api.table(b'', 'a3-fw3.1')\n"
+                              "except api.InputError as e:\n    print(e)"], capture_output=True, text=True, cwd=ROOT,
+                             env={**os.environ, **env}, timeout=60)
+    assert "pip install 'osdk-conformance[flight]'" in api_use.stdout, api_use.stderr

@@ -18,7 +18,7 @@ from typing import IO, Sequence
 
 from osdk_conformance.core.errors import UsageError, cannot_read
 from osdk_conformance.core.options import baud_rate
-from osdk_conformance.flight import live
+from osdk_conformance.flight import extra, live
 from osdk_conformance.reference import decode as json_lines
 from osdk_conformance.reference.decode import parse_hex, read_chunks
 
@@ -91,9 +91,7 @@ def _run_table(args: argparse.Namespace) -> int:
     if args.pretty:
         raise UsageError("--pretty is for the JSON lines")
     items = _items(args.items)
-    # pyarrow and numpy are the optional `flight` extra, and loading them costs
-    # start-up time the JSON lines do not pay: imported when a table is asked for
-    from osdk_conformance.flight import columns, tables
+    columns, tables = extra.load("columns", "tables")   # the optional extra: only when a table is asked for
     name, chunks, close = _source(args)
     try:
         data = columns.read_chunks_of(chunks, args.profile, name)

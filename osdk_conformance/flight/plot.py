@@ -27,6 +27,7 @@ import numpy as np
 from osdk_conformance.core.errors import UsageError
 from osdk_conformance.device.plots import MAX_POINTS, Panel, small_multiples
 from osdk_conformance.flight.columns import FlightData
+from osdk_conformance.flight.records import attitude_of
 
 DEFAULT_ITEMS = ("battery", "attitude", "velocity")
 UNITS = {"battery": "%", "velocity": "m/s", "acceleration": "m/s²", "angular_rate": "rad/s",
@@ -63,9 +64,8 @@ def series(data: FlightData, items: Iterable[str]) -> list[tuple[str, str, np.nd
             if "quaternion" not in data.items:
                 raise UsageError(f"attitude needs the quaternion item, which the {data.profile} broadcast lacks")
             q0, q1, q2, q3, ok = _quaternion(data)
-            roll = np.degrees(np.arctan2(2 * (q0 * q1 + q2 * q3), 1 - 2 * (q1 * q1 + q2 * q2)))
-            pitch = np.degrees(np.arcsin(np.clip(2 * (q0 * q2 - q3 * q1), -1.0, 1.0)))
-            yaw = np.degrees(np.arctan2(2 * (q0 * q3 + q1 * q2), 1 - 2 * (q2 * q2 + q3 * q3)))
+            # the records' formula (one way to turn the quaternion into angles), over every frame
+            roll, pitch, yaw = (np.asarray(a, dtype=np.float64) for a in np.vectorize(attitude_of, otypes=[float] * 3)(q0, q1, q2, q3))
             out += [("roll", "deg", roll, ok), ("pitch", "deg", pitch, ok), ("yaw", "deg", yaw, ok)]
             continue
         columns = data.columns_of([item])
@@ -90,6 +90,9 @@ def series(data: FlightData, items: Iterable[str]) -> list[tuple[str, str, np.nd
 
 
 def figure(data: FlightData, items: Sequence[str], title: str) -> str:
+    if not data.rows:
+        raise UsageError(f"{data.source}: no broadcast frame decodes as {data.profile} "
+                         f"({data.counts['frames']} frames, {data.counts['errors']} errors)")
     x, xlabel = _axis(data)
     panels = [Panel(name, unit, _thinned(x, values, present)) for name, unit, values, present in series(data, items)]
     span = (0.0, float(x[-1]) if len(x) else 1.0)
@@ -112,5 +115,5 @@ def svg(data: FlightData, items: Sequence[str]) -> str:
     fig = figure(data, items, f"{data.source}: {', '.join(items)}")
     body = re.search(r"<svg .*</svg>", fig, re.S)
     if body is None:   # no panel: the figure says "No data."
-        raise UsageError(f"{data.source}: nothing to draw (no broadcast frame with {', '.join(items)})")
+        raise UsageError(f"{data.source}: nothing to draw of {', '.join(items)}")
     return body.group(0).replace("<svg ", '<svg xmlns="http://www.w3.org/2000/svg" ', 1) + "\n"

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Sequence
 
 from osdk_conformance.core.errors import UsageError, cannot_read
+from osdk_conformance.flight import extra
 
 SUFFIXES = (".html", ".svg")
 DEFAULT_ITEMS = "battery,attitude,velocity"
@@ -33,15 +34,11 @@ def run_plot(args: argparse.Namespace) -> int:
     items = [i.strip() for i in args.items.split(",") if i.strip()]
     if not items:
         raise UsageError("--items names nothing to draw")
-    # numpy is the optional `flight` extra, and loading it costs start-up time: imported when a plot is asked for
-    from osdk_conformance.flight import columns, plot
+    columns, plot = extra.load("columns", "plot")
     try:
         data = columns.read(args.capture, args.profile)
     except OSError as e:
         raise UsageError(cannot_read(args.capture, e)) from None
-    if not data.rows:
-        raise UsageError(f"{args.capture}: no broadcast frame decodes as {args.profile} "
-                         f"({data.counts['frames']} frames, {data.counts['errors']} errors)")
     text = plot.svg(data, items) if out.suffix.lower() == ".svg" else plot.page(data, items)
     tmp = out.with_name(out.name + ".partial")
     try:

@@ -30,6 +30,7 @@ from typing import Any, Iterator, NamedTuple
 
 from osdk_conformance._construct import enums as spec_enums
 from osdk_conformance.flight.columns import NO_TIME, FC_TICKS_PER_S, FC_TIME_COLUMN, Column, FlightData
+from osdk_conformance.sim.simulator import quaternion_to_euler
 
 
 class Attitude(NamedTuple):
@@ -45,12 +46,9 @@ class LatLon(NamedTuple):
 
 def attitude_of(q0: float, q1: float, q2: float, q3: float) -> Attitude:
     """Roll, pitch and yaw in degrees (Z-Y-X Tait-Bryan angles) of the
-    attitude quaternion the broadcast sends (ground frame to body frame)."""
-    roll = math.atan2(2 * (q0 * q1 + q2 * q3), 1 - 2 * (q1 * q1 + q2 * q2))
-    # asin's argument leaves [-1, 1] by rounding alone at ±90° pitch: clamp it
-    pitch = math.asin(max(-1.0, min(1.0, 2 * (q0 * q2 - q3 * q1))))
-    yaw = math.atan2(2 * (q0 * q3 + q1 * q2), 1 - 2 * (q2 * q2 + q3 * q3))
-    return Attitude(math.degrees(roll), math.degrees(pitch), math.degrees(yaw))
+    attitude quaternion the broadcast sends (ground frame to body frame), as
+    the simulator and the acceptance report turn it into angles."""
+    return Attitude(*(math.degrees(a) for a in quaternion_to_euler(q0, q1, q2, q3)))
 
 
 @functools.lru_cache(maxsize=None)
