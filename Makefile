@@ -41,7 +41,7 @@ examples: $(PY_OK) testees
 
 $(PY_OK): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
-	$(BIN)/pip install --quiet --disable-pip-version-check -c constraints.txt -e '.[test,flight]'
+	$(BIN)/pip install --quiet --no-compile --disable-pip-version-check -c constraints.txt -e '.[test,flight]'
 	touch $@
 
 # The native accelerator (osdk_conformance/reference/_accel.c and the generated
