@@ -15,9 +15,11 @@ spec (CRC parameters and tables, header layout, receiver checks, control
 mode tables). The output is deterministic.
 
 --target cpython writes, instead, `<type>_to_py()` for every type: the same
-value model built as Python objects (dicts, ints, bools, hex strings), for
-the native accelerator of osdk_conformance (osdk_conformance/reference/_accel.c). It
-is kept apart from generated/c/, which needs nothing beyond libc.
+value model built as Python objects (dicts, ints, bools, hex strings), and
+osdk_columns.c: each profile's broadcast flattened to typed columns, one
+row per frame (the tables of osdk_conformance/flight), both for the native
+accelerator of osdk_conformance (osdk_conformance/reference/_accel.c). They
+are kept apart from generated/c/, which needs nothing beyond libc.
 """
 from __future__ import annotations
 
