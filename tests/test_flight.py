@@ -407,3 +407,15 @@ def test_without_the_flight_extra_each_command_says_what_to_install(flight_captu
                               "except api.InputError as e:\n    print(e)"], capture_output=True, text=True, cwd=ROOT,
                              env={**os.environ, **env}, timeout=60)
     assert "pip install 'osdk-conformance[flight]'" in api_use.stdout, api_use.stderr
+
+
+def test_the_bench_measures_the_table_the_records_and_the_csv_and_states_their_targets() -> None:
+    from osdk_conformance.bench import flight_data, report
+    c = corpus("a3-hour", seconds=5)
+    got = flight_data.measure(c, timeout=120, repeats=1)
+    assert got["ok"], got
+    assert got["rows"] == c.frames and got["columns"] == 68 and got["runs"] == 1
+    assert all(got[k] > 0 for k in ("table_seconds", "records_seconds", "csv_seconds"))
+    targets = report._flight_targets(got)
+    assert [t["target"].split(" in < ")[-1] for t in targets] == ["0.5 s", "2 s", "5 s"]
+    assert all("extrapolated from 5 s" in t["measured"] for t in targets)

@@ -228,9 +228,9 @@ def _others(result: dict) -> list[tuple[str, str, str]]:
                          f"OSDKC_ACCEL={'1' if r['decoder'] == 'native' else '0'} osdkc decode --profile "
                          f"{api['profile']} FILE", text + (f"; FAILED: {r['error']}" if "error" in r else "")))
         if fl := api.get("flight"):
-            text = (f"Arrow table {fl['table_seconds']:.2f} s ({fl['rows']:,} rows x {fl['columns']} columns); typed "
-                    f"records {fl['records_seconds']:.2f} s; osdkc decode --format csv {fl.get('csv_seconds', '–')} s"
-                    if "table_seconds" in fl else "")
+            text = (f"best of {fl['runs']}: Arrow table {fl['table_seconds']:.2f} s ({fl['rows']:,} rows x "
+                    f"{fl['columns']} columns); typed records {fl['records_seconds']:.2f} s; osdkc decode --format csv "
+                    f"{fl.get('csv_seconds', '–')} s" if "table_seconds" in fl else "")
             rows.append((f"{fl['corpus']} ({fl['corpus_seconds']:g} s of traffic), flight data",
                          f"osdkc decode --profile {api['profile']} --format csv FILE",
                          text + (f"; FAILED: {fl['error']}" if "error" in fl else "")))
