@@ -56,7 +56,7 @@ from osdk_conformance.harness.testee import DEFAULT_MEMORY_MB, DEFAULT_TIMEOUT, 
 from osdk_conformance.harness.vectors import Case, compare as judge, load_checked_cases
 from osdk_conformance.reference import codec, values
 from osdk_conformance.reference.decode import classify as error_class, parse_hex, read_chunks, timed_events
-from osdk_conformance.flight import extra as flight_extra
+from osdk_conformance.flight import extra as flight_extra, output as flight_output
 from osdk_conformance.sim.bugs import BUGS
 from osdk_conformance.sim.simulator import FAULTS, RC_MODE, PtyTransport, SimConfig, Simulator
 from osdk_conformance.device.checks import Options as _DeviceOptions
@@ -400,8 +400,7 @@ def plot(source: str | os.PathLike[str] | BytesLike, profile: str, items: Sequen
         text = plot_module.svg(data, list(items)) if out.lower().endswith(".svg") else plot_module.page(data, list(items))
     except UsageError as e:
         raise InputError(str(e)) from None
-    with open(out, "w", encoding="utf-8") as fh:
-        fh.write(text)
+    flight_output.write_replacing(out, lambda fh: fh.write(text.encode("utf-8")))
     return out
 
 

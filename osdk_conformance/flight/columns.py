@@ -79,8 +79,7 @@ class FlightData:
         self.offset = np.frombuffer(taken["offset"], dtype=np.uint64)
         self.time_ns = np.frombuffer(taken["time"], dtype=np.int64)
         self.has_capture_time = has_capture_time
-        self.pcapng = seen.pcapng
-        self.cut_block = seen.cut_block
+        self.seen = seen   # what the input held besides frames: a pcapng block cut at its end
         self._by_name = {c.name: c for c in columns}
         self.items: tuple[str, ...] = tuple(dict.fromkeys(c.item for c in columns))
 
@@ -118,6 +117,15 @@ class FlightData:
         """True where the frame carried the column's value."""
         self.column(name)
         return self._valid[name]
+
+    def present(self, prefix: str) -> np.ndarray:
+        """Where the item or sub-structure `prefix` ("gimbal", "gimbal.limit")
+        is present: where any of its leaves is (an optional part may be absent)."""
+        mask = np.zeros(self.rows, dtype=bool)
+        for c in self.columns:
+            if c.name == prefix or c.name.startswith(prefix + "."):
+                mask |= self._valid[c.name]
+        return mask
 
     def columns_of(self, items: Iterable[str] | None) -> tuple[Column, ...]:
         """The columns of the named items (or of leaves named in full), in layout order; all for None."""
@@ -185,9 +193,7 @@ def schema_of(filler) -> tuple[Column, ...]:
 
 
 def feed(filler, data: bytes, ts_ns: int | None) -> None:
-    view = memoryview(data)
-    for start in range(0, len(view), accel.SLICE):   # a few KiB at a time stay in the caches
-        filler.feed(view[start:start + accel.SLICE], ts_ns)
+    filler.feed(data, ts_ns)
 
 
 def take(filler, profile: str, schema: tuple[Column, ...], name: str = "stream", timed: bool = True,

@@ -14,13 +14,12 @@ import argparse
 import os
 import sys
 import threading
-from typing import IO, Sequence
+from typing import Sequence
 
-from osdk_conformance.core.errors import UsageError, cannot_read
+from osdk_conformance.core.errors import UsageError
 from osdk_conformance.core.options import baud_rate
-from osdk_conformance.flight import extra, live
+from osdk_conformance.flight import extra, live, output
 from osdk_conformance.reference import decode as json_lines
-from osdk_conformance.reference.decode import parse_hex, read_chunks
 
 FORMATS = ("jsonl", "csv", "parquet")
 DEFAULT_BAUD = 230400
@@ -92,7 +91,7 @@ def _run_table(args: argparse.Namespace) -> int:
         raise UsageError("--pretty is for the JSON lines")
     items = _items(args.items)
     columns, tables = extra.load("columns", "tables")   # the optional extra: only when a table is asked for
-    name, chunks, close = _source(args)
+    name, chunks, close = json_lines.open_input(args)
     try:
         data = columns.read_chunks_of(chunks, args.profile, name)
     except OSError as e:
@@ -107,34 +106,15 @@ def _run_table(args: argparse.Namespace) -> int:
     return status(data, recording=args.hex is None)
 
 
-def _source(args: argparse.Namespace) -> tuple[str, object, IO[bytes] | None]:
-    if args.hex is not None:
-        return "--hex", [parse_hex(args.hex)], None
-    if args.file == "-":
-        return "standard input", read_chunks(sys.stdin.buffer), None
-    try:
-        fh = open(args.file, "rb")
-    except OSError as e:
-        raise UsageError(cannot_read(args.file, e)) from None
-    return args.file, read_chunks(fh), fh
-
-
 def _write(table, tables, args: argparse.Namespace) -> None:
     if not args.output:
         tables.write(table, args.format, sys.stdout.buffer)
         sys.stdout.flush()
         return
-    # written beside the target and renamed, so an interrupted run never leaves half a file under its name
-    tmp = f"{args.output}.partial"
     try:
-        with open(tmp, "wb") as out:
-            tables.write(table, args.format, out)
-        os.replace(tmp, args.output)
+        output.write_replacing(args.output, lambda out: tables.write(table, args.format, out))
     except OSError as e:
         raise UsageError(f"cannot write {args.output}: {e.strerror or e}") from None
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
 
 
 def notes(data, name: str, recording: bool) -> list[str]:
@@ -144,9 +124,8 @@ def notes(data, name: str, recording: bool) -> list[str]:
                ("other_frames", "frames of other commands"), ("encrypted_frames", "encrypted frames"),
                ("errors", "errors"), ("garbage_bytes", "garbage bytes")))
            + ("" if data.has_capture_time else "; raw bytes carry no capture time (no time column)")]
-    if data.cut_block:
-        out.append(f"warning: the capture is cut inside a pcapng block after {data.cut_block} bytes "
-                   "(its writer was stopped or killed); the frames before it are in the table")
+    if data.seen.cut_block:
+        out.append(json_lines.cut_block_note(data.seen, "in the table"))
     if c["capture_end_events"] and recording:
         out.append("the input ends inside a frame: the recording stopped there; not counted as an error")
     if recording and not c["frames"] and not c["errors"]:

@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import threading
 import time
-from itertools import chain
 from typing import Iterator
 
 import serial
 
-from osdk_conformance.core.capture import CaptureError, CaptureReader, NAMES, is_pcapng
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
+from osdk_conformance.reference.decode import timed_pieces
 
 POLL_S = 0.1        # how often a quiet port or file is looked at again
 READ_MAX = 65536
@@ -74,25 +73,25 @@ def _growing(fh, stop: threading.Event) -> Iterator[bytes]:
 
 
 def follow_pieces(path: str, stop: threading.Event) -> Iterator[tuple[bytes, int]]:
-    """The received bytes of a file that is still being written, from its start."""
+    """The received bytes of a file that is still being written, from its
+    start: read as `osdkc decode` reads a file (reference/decode.py,
+    timed_pieces), its end only where `stop` is set."""
     try:
         fh = open(path, "rb")
     except OSError as e:
         raise UsageError(cannot_read(path, e)) from None
     with fh:
-        chunks = _growing(fh, stop)
-        first = next(chunks, b"")
-        while len(first) < 4 and not stop.is_set():   # a capture just created: wait for its magic
-            first += next(chunks, b"")
-        if not is_pcapng(first):
-            if first:
-                yield first, time.time_ns()
-            for data in chunks:
-                yield data, time.time_ns()
-            return
-        try:
-            for rec in CaptureReader(chain([first], chunks), path):
-                if NAMES[rec.direction] == "rx":
-                    yield rec.data, rec.ts_ns
-        except CaptureError as e:
-            raise UsageError(str(e)) from None
+        for _, data, ts_ns in timed_pieces(_magic_first(_growing(fh, stop)), frozenset({"rx"}), path):
+            yield data, time.time_ns() if ts_ns is None else ts_ns
+
+
+def _magic_first(chunks: Iterator[bytes]) -> Iterator[bytes]:
+    # a capture just created may not hold its 4-byte magic yet: hold the start back until it does
+    first = b""
+    for chunk in chunks:
+        first += chunk
+        if len(first) >= 4:
+            break
+    if first:
+        yield first
+    yield from chunks

@@ -4,13 +4,12 @@ series (plot.py); HTML or SVG by the output's suffix."""
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 from typing import Sequence
 
 from osdk_conformance.core.errors import UsageError, cannot_read
-from osdk_conformance.flight import extra
+from osdk_conformance.flight import extra, output
 
 SUFFIXES = (".html", ".svg")
 DEFAULT_ITEMS = "battery,attitude,velocity"
@@ -40,13 +39,9 @@ def run_plot(args: argparse.Namespace) -> int:
     except OSError as e:
         raise UsageError(cannot_read(args.capture, e)) from None
     text = plot.svg(data, items) if out.suffix.lower() == ".svg" else plot.page(data, items)
-    tmp = out.with_name(out.name + ".partial")
     try:
-        tmp.write_text(text, encoding="utf-8")
-        os.replace(tmp, out)
+        output.write_replacing(out, lambda fh: fh.write(text.encode("utf-8")))
     except OSError as e:
         raise UsageError(f"cannot write {out}: {e.strerror or e}") from None
-    finally:
-        tmp.unlink(missing_ok=True)
     print(f"osdkc plot: {data.rows:,} broadcast frames of {args.capture} drawn to {out}", file=sys.stderr)
     return 0

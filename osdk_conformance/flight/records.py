@@ -96,11 +96,6 @@ class _Leaf:
             self._load()
         return self._values[row] if self._valid[row] else None  # type: ignore[index]
 
-    def present(self) -> list:
-        if self._valid is None:
-            self._load()
-        return self._valid  # type: ignore[return-value]
-
     def bits(self, row: int) -> int:
         return int(self._data.raw(self.column.name)[row])
 
@@ -124,27 +119,10 @@ class _Node:
         self.fields: dict[str, _Leaf | _Node] = {}
         self._present: list | None = None
 
-    def leaves(self) -> Iterator[_Leaf]:
-        for f in self.fields.values():
-            yield from (f.leaves() if isinstance(f, _Node) else (f,))
-
     def present(self) -> list:
-        if self._present is None:   # the leaves' masks, OR-ed once
-            mask = None
-            for leaf in self.leaves():
-                v = self._data.valid(leaf.column.name)
-                mask = v.copy() if mask is None else mask | v
-            self._present = mask.tolist() if mask is not None else []
+        if self._present is None:
+            self._present = self._data.present(self.name).tolist()
         return self._present
-
-    def get(self, field: str, row: int) -> Any:
-        try:
-            f = self.fields[field]
-        except KeyError:
-            raise AttributeError(f"{self.name} has no field {field!r} (its fields: {', '.join(self.fields)})") from None
-        if isinstance(f, _Node):
-            return Item(f, row) if f.present()[row] else None
-        return f.value(row)
 
 
 class _Shape:
@@ -163,6 +141,8 @@ class _Shape:
                     nxt = node.fields[part] = _Node(".".join(parts[:i + 1]), data)
                 node = nxt  # type: ignore[assignment]
             node.fields[parts[-1]] = _Leaf(c, data)
+        stamp = self.root.fields.get(FC_TIME_COLUMN.split(".")[0])
+        self.fc_ticks = stamp.fields.get(FC_TIME_COLUMN.split(".")[1]) if isinstance(stamp, _Node) else None
         self.record_class = _typed(Broadcast, "Broadcast", self.root)
 
 
@@ -239,9 +219,8 @@ class Broadcast:
 
     @property
     def fc_time(self) -> float | None:
-        item, field = FC_TIME_COLUMN.split(".")
-        stamp = self._shape.root.fields.get(item)
-        ticks = stamp.get(field, self._row) if isinstance(stamp, _Node) else None
+        leaf = self._shape.fc_ticks
+        ticks = leaf.value(self._row) if isinstance(leaf, _Leaf) else None
         return None if ticks is None else ticks / FC_TICKS_PER_S
 
     @property

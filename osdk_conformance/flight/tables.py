@@ -92,10 +92,7 @@ def item_table(data: FlightData, item: str) -> pa.Table:
     columns = data.columns_of([item])
     if not columns:
         data.columns_of(["?" + item])  # raises the error that names the items
-    present = np.zeros(data.rows, dtype=bool)
-    for c in columns:
-        present |= data.valid(c.name)
-    rows = np.flatnonzero(present)
+    rows = np.flatnonzero(data.present(item))
     fields, arrays = _time_fields(data, rows)
     for c in columns:
         fields.append(_field(c))

@@ -54,17 +54,11 @@ class Stats:
 
     def add(self, data: columns.FlightData, nbytes: int) -> None:
         now = time.monotonic()
-        per_item = {}
-        for item in self.items:
-            present = np.zeros(data.rows, dtype=bool)
-            for c in self.schema:
-                if c.item == item:
-                    valid = data.valid(c.name)
-                    present |= valid
-                    where = np.flatnonzero(valid)
-                    if len(where):
-                        self.latest[c.name] = data.values(c.name)[where[-1]].item()
-            per_item[item] = int(np.count_nonzero(present))
+        per_item = {item: int(np.count_nonzero(data.present(item))) for item in self.items}
+        for c in self.schema:
+            where = np.flatnonzero(data.valid(c.name))
+            if len(where):
+                self.latest[c.name] = data.values(c.name)[where[-1]].item()
         c = data.counts
         self.window.append((self.last, per_item, c["frames"], c["errors"], c["garbage_bytes"], nbytes))
         self.last = now

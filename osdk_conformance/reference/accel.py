@@ -26,7 +26,7 @@ import functools
 import importlib
 import os
 from types import ModuleType
-from typing import Any, Iterable, Iterator
+from typing import Any, Iterator
 
 from osdk_conformance.core.deframe import header_fields
 from osdk_conformance.core.errors import UsageError
@@ -119,9 +119,3 @@ def stream(profile: str) -> NativeStream | None:
     """A native decoder for `profile`, or None when pure Python is to run."""
     module = native()
     return NativeStream(module, profile) if module is not None else None
-
-
-def events(chunks: Iterable[bytes], decoder: NativeStream) -> Iterator[dict[str, Any]]:
-    for chunk in chunks:
-        yield from decoder.feed(chunk)
-    yield from decoder.finish()

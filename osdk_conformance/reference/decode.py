@@ -569,6 +569,13 @@ def mark_capture_end(events: Iterable[dict], seen: InputSeen, direction: str) ->
         yield {**ev, "capture_end": True} if ev["kind"] == "error" and i >= tail.get(d, len(held)) else ev
 
 
+def cut_block_note(seen: InputSeen, done: str) -> str:
+    """The warning about a capture whose last pcapng block is cut short (a killed writer)."""
+    at = seen.size - seen.cut_block
+    return (f"warning: the capture is cut inside a pcapng block after {seen.cut_block} bytes (the block at offset "
+            f"{at}: its writer was stopped or killed); the frames before it are {done}")
+
+
 class Tally:
     """What `osdkc decode` says on standard error after the events, and its
     exit status, from the events as they go by."""
@@ -616,9 +623,7 @@ class Tally:
         """The lines for standard error, each about what the events alone do not say."""
         out = []
         if self.seen.cut_block:
-            at = self.seen.size - self.seen.cut_block
-            out.append(f"warning: the capture is cut inside a pcapng block after {self.seen.cut_block} bytes "
-                       f"(the block at offset {at}: its writer was stopped or killed); the frames before it are decoded")
+            out.append(cut_block_note(self.seen, "decoded"))
         for d, ev in self.tails.items():
             out.append(self._tail_note(d, ev))
         if self.undecoded_count * 2 > self.broadcasts:
@@ -655,7 +660,7 @@ class Tally:
         return 1 if self.errors or (recording and not self.frames) else 0
 
 
-def _open_input(args: argparse.Namespace) -> tuple[str, Iterable[bytes], IO[bytes] | None]:
+def open_input(args: argparse.Namespace) -> tuple[str, Iterable[bytes], IO[bytes] | None]:
     """The input's name for messages, its chunks, and the file to close after."""
     if args.hex is not None:
         return "--hex", [parse_hex(args.hex)], None
@@ -675,7 +680,7 @@ def run_decode(args: argparse.Namespace, opened: tuple[str, Iterable[bytes], IO[
     """`osdkc decode` to JSON lines; `opened` is the input when the caller
     opened it (name, chunks, file to close); `live` flushes each event as it
     comes (a port, a growing file)."""
-    name, source, close = opened or _open_input(args)
+    name, source, close = opened or open_input(args)
     # A file or standard input is a recording: where it ends, the recording
     # stopped, whatever the device was sending. --hex is exactly the bytes
     # the user meant; a frame they cut short is theirs to see as an error.
