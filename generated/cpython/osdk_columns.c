@@ -4,6 +4,255 @@
 
 const uint8_t osdk_col_size[OSDK_COL_TYPE_COUNT] = {1, 1, 2, 4, 8, 1, 2, 4, 8, 4, 8};
 
+/* osdk_broadcast_items::time_stamp: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_time_stamp_cols(const osdk_broadcast_items_time_stamp_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->time : 0;
+    valid[0][row] = p;
+    p = present && self->nano_time_present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->nano_time : 0;
+    valid[1][row] = p;
+    p = present && self->sync_flag_present;
+    ((uint8_t *)cols[2])[row] = p ? (uint8_t)self->sync_flag : 0;
+    valid[2][row] = p;
+}
+
+/* osdk_broadcast_items::quaternion: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_quaternion_cols(const osdk_broadcast_items_quaternion_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->q0.bits : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->q1.bits : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint32_t *)cols[2])[row] = p ? (uint32_t)self->q2.bits : 0;
+    valid[2][row] = p;
+    p = present;
+    ((uint32_t *)cols[3])[row] = p ? (uint32_t)self->q3.bits : 0;
+    valid[3][row] = p;
+}
+
+/* osdk_broadcast_items::vector3f: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_vector3f_cols(const osdk_broadcast_items_vector3f_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->x.bits : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->y.bits : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint32_t *)cols[2])[row] = p ? (uint32_t)self->z.bits : 0;
+    valid[2][row] = p;
+}
+
+/* osdk_broadcast_items::velocity: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_velocity_cols(const osdk_broadcast_items_velocity_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->x.bits : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->y.bits : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint32_t *)cols[2])[row] = p ? (uint32_t)self->z.bits : 0;
+    valid[2][row] = p;
+    p = present;
+    ((uint8_t *)cols[3])[row] = p ? (uint8_t)self->data_valid : 0;
+    valid[3][row] = p;
+    p = present;
+    ((uint8_t *)cols[4])[row] = p ? (uint8_t)self->sensor_id : 0;
+    valid[4][row] = p;
+    p = present;
+    ((uint8_t *)cols[5])[row] = p ? (uint8_t)self->reserved : 0;
+    valid[5][row] = p;
+}
+
+/* osdk_broadcast_items::position: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_position_cols(const osdk_broadcast_items_position_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint64_t *)cols[0])[row] = p ? (uint64_t)self->latitude.bits : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint64_t *)cols[1])[row] = p ? (uint64_t)self->longitude.bits : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint32_t *)cols[2])[row] = p ? (uint32_t)self->altitude.bits : 0;
+    valid[2][row] = p;
+    p = present;
+    ((uint32_t *)cols[3])[row] = p ? (uint32_t)self->height.bits : 0;
+    valid[3][row] = p;
+    p = present;
+    ((uint8_t *)cols[4])[row] = p ? (uint8_t)self->gps_health : 0;
+    valid[4][row] = p;
+}
+
+/* osdk_broadcast_items::magnetometer: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_magnetometer_cols(const osdk_broadcast_items_magnetometer_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((int16_t *)cols[0])[row] = p ? (int16_t)self->x : 0;
+    valid[0][row] = p;
+    p = present;
+    ((int16_t *)cols[1])[row] = p ? (int16_t)self->y : 0;
+    valid[1][row] = p;
+    p = present;
+    ((int16_t *)cols[2])[row] = p ? (int16_t)self->z : 0;
+    valid[2][row] = p;
+}
+
+/* osdk_broadcast_items::rc: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_rc_cols(const osdk_broadcast_items_rc_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((int16_t *)cols[0])[row] = p ? (int16_t)self->roll : 0;
+    valid[0][row] = p;
+    p = present;
+    ((int16_t *)cols[1])[row] = p ? (int16_t)self->pitch : 0;
+    valid[1][row] = p;
+    p = present;
+    ((int16_t *)cols[2])[row] = p ? (int16_t)self->yaw : 0;
+    valid[2][row] = p;
+    p = present;
+    ((int16_t *)cols[3])[row] = p ? (int16_t)self->throttle : 0;
+    valid[3][row] = p;
+    p = present;
+    ((int16_t *)cols[4])[row] = p ? (int16_t)self->mode : 0;
+    valid[4][row] = p;
+    p = present;
+    ((int16_t *)cols[5])[row] = p ? (int16_t)self->gear : 0;
+    valid[5][row] = p;
+}
+
+/* osdk_broadcast_items::gimbal: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_gimbal_cols(const osdk_broadcast_items_gimbal_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->roll.bits : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->pitch.bits : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint32_t *)cols[2])[row] = p ? (uint32_t)self->yaw.bits : 0;
+    valid[2][row] = p;
+    p = present && self->limit_present;
+    ((uint8_t *)cols[3])[row] = p ? (uint8_t)self->limit.pitch_limit : 0;
+    valid[3][row] = p;
+    p = present && self->limit_present;
+    ((uint8_t *)cols[4])[row] = p ? (uint8_t)self->limit.roll_limit : 0;
+    valid[4][row] = p;
+    p = present && self->limit_present;
+    ((uint8_t *)cols[5])[row] = p ? (uint8_t)self->limit.yaw_limit : 0;
+    valid[5][row] = p;
+    p = present && self->limit_present;
+    ((uint8_t *)cols[6])[row] = p ? (uint8_t)self->limit.reserved : 0;
+    valid[6][row] = p;
+}
+
+/* osdk_broadcast_items::control_info: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_control_info_cols(const osdk_broadcast_items_control_info_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present && self->cur_mov_control_mode_present;
+    ((uint8_t *)cols[0])[row] = p ? (uint8_t)self->cur_mov_control_mode : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint8_t *)cols[1])[row] = p ? (uint8_t)self->control_device : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint8_t *)cols[2])[row] = p ? (uint8_t)self->onboard_requested : 0;
+    valid[2][row] = p;
+    p = present;
+    ((uint8_t *)cols[3])[row] = p ? (uint8_t)self->virtual_rc : 0;
+    valid[3][row] = p;
+    p = present;
+    ((uint8_t *)cols[4])[row] = p ? (uint8_t)self->reserved : 0;
+    valid[4][row] = p;
+}
+
+/* osdk_broadcast_items::gps_detail: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_gps_detail_cols(const osdk_broadcast_items_gps_detail_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->date : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->time : 0;
+    valid[1][row] = p;
+    p = present;
+    ((int32_t *)cols[2])[row] = p ? (int32_t)self->longitude : 0;
+    valid[2][row] = p;
+    p = present;
+    ((int32_t *)cols[3])[row] = p ? (int32_t)self->latitude : 0;
+    valid[3][row] = p;
+    p = present;
+    ((int32_t *)cols[4])[row] = p ? (int32_t)self->height_msl : 0;
+    valid[4][row] = p;
+    p = present;
+    ((uint32_t *)cols[5])[row] = p ? (uint32_t)self->vel_n.bits : 0;
+    valid[5][row] = p;
+    p = present;
+    ((uint32_t *)cols[6])[row] = p ? (uint32_t)self->vel_e.bits : 0;
+    valid[6][row] = p;
+    p = present;
+    ((uint32_t *)cols[7])[row] = p ? (uint32_t)self->vel_d.bits : 0;
+    valid[7][row] = p;
+}
+
+/* osdk_broadcast_items::rtk_detail: its leaves, in the columns from cols[0] on */
+static void osdk_broadcast_items_rtk_detail_cols(const osdk_broadcast_items_rtk_detail_t *self, bool present, void *const *cols, uint8_t *const *valid, size_t row)
+{
+    bool p;
+    p = present;
+    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->date : 0;
+    valid[0][row] = p;
+    p = present;
+    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->time : 0;
+    valid[1][row] = p;
+    p = present;
+    ((uint64_t *)cols[2])[row] = p ? (uint64_t)self->longitude.bits : 0;
+    valid[2][row] = p;
+    p = present;
+    ((uint64_t *)cols[3])[row] = p ? (uint64_t)self->latitude.bits : 0;
+    valid[3][row] = p;
+    p = present;
+    ((uint32_t *)cols[4])[row] = p ? (uint32_t)self->height_msl.bits : 0;
+    valid[4][row] = p;
+    p = present;
+    ((uint32_t *)cols[5])[row] = p ? (uint32_t)self->vel_n.bits : 0;
+    valid[5][row] = p;
+    p = present;
+    ((uint32_t *)cols[6])[row] = p ? (uint32_t)self->vel_e.bits : 0;
+    valid[6][row] = p;
+    p = present;
+    ((uint32_t *)cols[7])[row] = p ? (uint32_t)self->vel_d.bits : 0;
+    valid[7][row] = p;
+    p = present;
+    ((int16_t *)cols[8])[row] = p ? (int16_t)self->yaw : 0;
+    valid[8][row] = p;
+    p = present;
+    ((uint8_t *)cols[9])[row] = p ? (uint8_t)self->position_flag : 0;
+    valid[9][row] = p;
+    p = present;
+    ((uint8_t *)cols[10])[row] = p ? (uint8_t)self->yaw_flag : 0;
+    valid[10][row] = p;
+}
+
 /* osdk_broadcast_m100_fw2_3 */
 static const osdk_column_t osdk_broadcast_m100_fw2_3_columns[47] = {
     {"time_stamp.time", 0, OSDK_COL_U32, NULL},
@@ -60,147 +309,22 @@ static const osdk_column_set_t osdk_broadcast_m100_fw2_3_column_set = {osdk_broa
 static void osdk_broadcast_m100_fw2_3_row(const osdk_broadcast_m100_fw2_3_t *self, void *const *cols, uint8_t *const *valid, size_t row)
 {
     bool p;
-    p = self->time_stamp_present;
-    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->time_stamp.time : 0;
-    valid[0][row] = p;
-    p = self->time_stamp_present && self->time_stamp.nano_time_present;
-    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->time_stamp.nano_time : 0;
-    valid[1][row] = p;
-    p = self->time_stamp_present && self->time_stamp.sync_flag_present;
-    ((uint8_t *)cols[2])[row] = p ? (uint8_t)self->time_stamp.sync_flag : 0;
-    valid[2][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[3])[row] = p ? (uint32_t)self->quaternion.q0.bits : 0;
-    valid[3][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[4])[row] = p ? (uint32_t)self->quaternion.q1.bits : 0;
-    valid[4][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[5])[row] = p ? (uint32_t)self->quaternion.q2.bits : 0;
-    valid[5][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[6])[row] = p ? (uint32_t)self->quaternion.q3.bits : 0;
-    valid[6][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[7])[row] = p ? (uint32_t)self->acceleration.x.bits : 0;
-    valid[7][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[8])[row] = p ? (uint32_t)self->acceleration.y.bits : 0;
-    valid[8][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[9])[row] = p ? (uint32_t)self->acceleration.z.bits : 0;
-    valid[9][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[10])[row] = p ? (uint32_t)self->velocity.x.bits : 0;
-    valid[10][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[11])[row] = p ? (uint32_t)self->velocity.y.bits : 0;
-    valid[11][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[12])[row] = p ? (uint32_t)self->velocity.z.bits : 0;
-    valid[12][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[13])[row] = p ? (uint8_t)self->velocity.data_valid : 0;
-    valid[13][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[14])[row] = p ? (uint8_t)self->velocity.sensor_id : 0;
-    valid[14][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[15])[row] = p ? (uint8_t)self->velocity.reserved : 0;
-    valid[15][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[16])[row] = p ? (uint32_t)self->angular_rate.x.bits : 0;
-    valid[16][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[17])[row] = p ? (uint32_t)self->angular_rate.y.bits : 0;
-    valid[17][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[18])[row] = p ? (uint32_t)self->angular_rate.z.bits : 0;
-    valid[18][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[19])[row] = p ? (uint64_t)self->position.latitude.bits : 0;
-    valid[19][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[20])[row] = p ? (uint64_t)self->position.longitude.bits : 0;
-    valid[20][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[21])[row] = p ? (uint32_t)self->position.altitude.bits : 0;
-    valid[21][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[22])[row] = p ? (uint32_t)self->position.height.bits : 0;
-    valid[22][row] = p;
-    p = self->position_present;
-    ((uint8_t *)cols[23])[row] = p ? (uint8_t)self->position.gps_health : 0;
-    valid[23][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[24])[row] = p ? (int16_t)self->magnetometer.x : 0;
-    valid[24][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[25])[row] = p ? (int16_t)self->magnetometer.y : 0;
-    valid[25][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[26])[row] = p ? (int16_t)self->magnetometer.z : 0;
-    valid[26][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[27])[row] = p ? (int16_t)self->rc.roll : 0;
-    valid[27][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[28])[row] = p ? (int16_t)self->rc.pitch : 0;
-    valid[28][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[29])[row] = p ? (int16_t)self->rc.yaw : 0;
-    valid[29][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[30])[row] = p ? (int16_t)self->rc.throttle : 0;
-    valid[30][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[31])[row] = p ? (int16_t)self->rc.mode : 0;
-    valid[31][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[32])[row] = p ? (int16_t)self->rc.gear : 0;
-    valid[32][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[33])[row] = p ? (uint32_t)self->gimbal.roll.bits : 0;
-    valid[33][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[34])[row] = p ? (uint32_t)self->gimbal.pitch.bits : 0;
-    valid[34][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[35])[row] = p ? (uint32_t)self->gimbal.yaw.bits : 0;
-    valid[35][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[36])[row] = p ? (uint8_t)self->gimbal.limit.pitch_limit : 0;
-    valid[36][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[37])[row] = p ? (uint8_t)self->gimbal.limit.roll_limit : 0;
-    valid[37][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[38])[row] = p ? (uint8_t)self->gimbal.limit.yaw_limit : 0;
-    valid[38][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[39])[row] = p ? (uint8_t)self->gimbal.limit.reserved : 0;
-    valid[39][row] = p;
+    osdk_broadcast_items_time_stamp_cols(&self->time_stamp, self->time_stamp_present, cols + 0, valid + 0, row);
+    osdk_broadcast_items_quaternion_cols(&self->quaternion, self->quaternion_present, cols + 3, valid + 3, row);
+    osdk_broadcast_items_vector3f_cols(&self->acceleration, self->acceleration_present, cols + 7, valid + 7, row);
+    osdk_broadcast_items_velocity_cols(&self->velocity, self->velocity_present, cols + 10, valid + 10, row);
+    osdk_broadcast_items_vector3f_cols(&self->angular_rate, self->angular_rate_present, cols + 16, valid + 16, row);
+    osdk_broadcast_items_position_cols(&self->position, self->position_present, cols + 19, valid + 19, row);
+    osdk_broadcast_items_magnetometer_cols(&self->magnetometer, self->magnetometer_present, cols + 24, valid + 24, row);
+    osdk_broadcast_items_rc_cols(&self->rc, self->rc_present, cols + 27, valid + 27, row);
+    osdk_broadcast_items_gimbal_cols(&self->gimbal, self->gimbal_present, cols + 33, valid + 33, row);
     p = self->flight_status_present;
     ((uint8_t *)cols[40])[row] = p ? (uint8_t)self->flight_status : 0;
     valid[40][row] = p;
     p = self->battery_present;
     ((uint8_t *)cols[41])[row] = p ? (uint8_t)self->battery : 0;
     valid[41][row] = p;
-    p = self->control_info_present && self->control_info.cur_mov_control_mode_present;
-    ((uint8_t *)cols[42])[row] = p ? (uint8_t)self->control_info.cur_mov_control_mode : 0;
-    valid[42][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[43])[row] = p ? (uint8_t)self->control_info.control_device : 0;
-    valid[43][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[44])[row] = p ? (uint8_t)self->control_info.onboard_requested : 0;
-    valid[44][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[45])[row] = p ? (uint8_t)self->control_info.virtual_rc : 0;
-    valid[45][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[46])[row] = p ? (uint8_t)self->control_info.reserved : 0;
-    valid[46][row] = p;
+    osdk_broadcast_items_control_info_cols(&self->control_info, self->control_info_present, cols + 42, valid + 42, row);
 }
 
 /* osdk_broadcast_m100_fw3_1 */
@@ -259,147 +383,22 @@ static const osdk_column_set_t osdk_broadcast_m100_fw3_1_column_set = {osdk_broa
 static void osdk_broadcast_m100_fw3_1_row(const osdk_broadcast_m100_fw3_1_t *self, void *const *cols, uint8_t *const *valid, size_t row)
 {
     bool p;
-    p = self->time_stamp_present;
-    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->time_stamp.time : 0;
-    valid[0][row] = p;
-    p = self->time_stamp_present && self->time_stamp.nano_time_present;
-    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->time_stamp.nano_time : 0;
-    valid[1][row] = p;
-    p = self->time_stamp_present && self->time_stamp.sync_flag_present;
-    ((uint8_t *)cols[2])[row] = p ? (uint8_t)self->time_stamp.sync_flag : 0;
-    valid[2][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[3])[row] = p ? (uint32_t)self->quaternion.q0.bits : 0;
-    valid[3][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[4])[row] = p ? (uint32_t)self->quaternion.q1.bits : 0;
-    valid[4][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[5])[row] = p ? (uint32_t)self->quaternion.q2.bits : 0;
-    valid[5][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[6])[row] = p ? (uint32_t)self->quaternion.q3.bits : 0;
-    valid[6][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[7])[row] = p ? (uint32_t)self->acceleration.x.bits : 0;
-    valid[7][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[8])[row] = p ? (uint32_t)self->acceleration.y.bits : 0;
-    valid[8][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[9])[row] = p ? (uint32_t)self->acceleration.z.bits : 0;
-    valid[9][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[10])[row] = p ? (uint32_t)self->velocity.x.bits : 0;
-    valid[10][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[11])[row] = p ? (uint32_t)self->velocity.y.bits : 0;
-    valid[11][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[12])[row] = p ? (uint32_t)self->velocity.z.bits : 0;
-    valid[12][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[13])[row] = p ? (uint8_t)self->velocity.data_valid : 0;
-    valid[13][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[14])[row] = p ? (uint8_t)self->velocity.sensor_id : 0;
-    valid[14][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[15])[row] = p ? (uint8_t)self->velocity.reserved : 0;
-    valid[15][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[16])[row] = p ? (uint32_t)self->angular_rate.x.bits : 0;
-    valid[16][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[17])[row] = p ? (uint32_t)self->angular_rate.y.bits : 0;
-    valid[17][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[18])[row] = p ? (uint32_t)self->angular_rate.z.bits : 0;
-    valid[18][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[19])[row] = p ? (uint64_t)self->position.latitude.bits : 0;
-    valid[19][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[20])[row] = p ? (uint64_t)self->position.longitude.bits : 0;
-    valid[20][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[21])[row] = p ? (uint32_t)self->position.altitude.bits : 0;
-    valid[21][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[22])[row] = p ? (uint32_t)self->position.height.bits : 0;
-    valid[22][row] = p;
-    p = self->position_present;
-    ((uint8_t *)cols[23])[row] = p ? (uint8_t)self->position.gps_health : 0;
-    valid[23][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[24])[row] = p ? (int16_t)self->magnetometer.x : 0;
-    valid[24][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[25])[row] = p ? (int16_t)self->magnetometer.y : 0;
-    valid[25][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[26])[row] = p ? (int16_t)self->magnetometer.z : 0;
-    valid[26][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[27])[row] = p ? (int16_t)self->rc.roll : 0;
-    valid[27][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[28])[row] = p ? (int16_t)self->rc.pitch : 0;
-    valid[28][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[29])[row] = p ? (int16_t)self->rc.yaw : 0;
-    valid[29][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[30])[row] = p ? (int16_t)self->rc.throttle : 0;
-    valid[30][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[31])[row] = p ? (int16_t)self->rc.mode : 0;
-    valid[31][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[32])[row] = p ? (int16_t)self->rc.gear : 0;
-    valid[32][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[33])[row] = p ? (uint32_t)self->gimbal.roll.bits : 0;
-    valid[33][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[34])[row] = p ? (uint32_t)self->gimbal.pitch.bits : 0;
-    valid[34][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[35])[row] = p ? (uint32_t)self->gimbal.yaw.bits : 0;
-    valid[35][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[36])[row] = p ? (uint8_t)self->gimbal.limit.pitch_limit : 0;
-    valid[36][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[37])[row] = p ? (uint8_t)self->gimbal.limit.roll_limit : 0;
-    valid[37][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[38])[row] = p ? (uint8_t)self->gimbal.limit.yaw_limit : 0;
-    valid[38][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[39])[row] = p ? (uint8_t)self->gimbal.limit.reserved : 0;
-    valid[39][row] = p;
+    osdk_broadcast_items_time_stamp_cols(&self->time_stamp, self->time_stamp_present, cols + 0, valid + 0, row);
+    osdk_broadcast_items_quaternion_cols(&self->quaternion, self->quaternion_present, cols + 3, valid + 3, row);
+    osdk_broadcast_items_vector3f_cols(&self->acceleration, self->acceleration_present, cols + 7, valid + 7, row);
+    osdk_broadcast_items_velocity_cols(&self->velocity, self->velocity_present, cols + 10, valid + 10, row);
+    osdk_broadcast_items_vector3f_cols(&self->angular_rate, self->angular_rate_present, cols + 16, valid + 16, row);
+    osdk_broadcast_items_position_cols(&self->position, self->position_present, cols + 19, valid + 19, row);
+    osdk_broadcast_items_magnetometer_cols(&self->magnetometer, self->magnetometer_present, cols + 24, valid + 24, row);
+    osdk_broadcast_items_rc_cols(&self->rc, self->rc_present, cols + 27, valid + 27, row);
+    osdk_broadcast_items_gimbal_cols(&self->gimbal, self->gimbal_present, cols + 33, valid + 33, row);
     p = self->flight_status_present;
     ((uint8_t *)cols[40])[row] = p ? (uint8_t)self->flight_status : 0;
     valid[40][row] = p;
     p = self->battery_present;
     ((uint8_t *)cols[41])[row] = p ? (uint8_t)self->battery : 0;
     valid[41][row] = p;
-    p = self->control_info_present && self->control_info.cur_mov_control_mode_present;
-    ((uint8_t *)cols[42])[row] = p ? (uint8_t)self->control_info.cur_mov_control_mode : 0;
-    valid[42][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[43])[row] = p ? (uint8_t)self->control_info.control_device : 0;
-    valid[43][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[44])[row] = p ? (uint8_t)self->control_info.onboard_requested : 0;
-    valid[44][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[45])[row] = p ? (uint8_t)self->control_info.virtual_rc : 0;
-    valid[45][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[46])[row] = p ? (uint8_t)self->control_info.reserved : 0;
-    valid[46][row] = p;
+    osdk_broadcast_items_control_info_cols(&self->control_info, self->control_info_present, cols + 42, valid + 42, row);
 }
 
 /* osdk_broadcast_a3_fw3_1 */
@@ -477,204 +476,24 @@ static const osdk_column_set_t osdk_broadcast_a3_fw3_1_column_set = {osdk_broadc
 static void osdk_broadcast_a3_fw3_1_row(const osdk_broadcast_a3_fw3_1_t *self, void *const *cols, uint8_t *const *valid, size_t row)
 {
     bool p;
-    p = self->time_stamp_present;
-    ((uint32_t *)cols[0])[row] = p ? (uint32_t)self->time_stamp.time : 0;
-    valid[0][row] = p;
-    p = self->time_stamp_present && self->time_stamp.nano_time_present;
-    ((uint32_t *)cols[1])[row] = p ? (uint32_t)self->time_stamp.nano_time : 0;
-    valid[1][row] = p;
-    p = self->time_stamp_present && self->time_stamp.sync_flag_present;
-    ((uint8_t *)cols[2])[row] = p ? (uint8_t)self->time_stamp.sync_flag : 0;
-    valid[2][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[3])[row] = p ? (uint32_t)self->quaternion.q0.bits : 0;
-    valid[3][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[4])[row] = p ? (uint32_t)self->quaternion.q1.bits : 0;
-    valid[4][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[5])[row] = p ? (uint32_t)self->quaternion.q2.bits : 0;
-    valid[5][row] = p;
-    p = self->quaternion_present;
-    ((uint32_t *)cols[6])[row] = p ? (uint32_t)self->quaternion.q3.bits : 0;
-    valid[6][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[7])[row] = p ? (uint32_t)self->acceleration.x.bits : 0;
-    valid[7][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[8])[row] = p ? (uint32_t)self->acceleration.y.bits : 0;
-    valid[8][row] = p;
-    p = self->acceleration_present;
-    ((uint32_t *)cols[9])[row] = p ? (uint32_t)self->acceleration.z.bits : 0;
-    valid[9][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[10])[row] = p ? (uint32_t)self->velocity.x.bits : 0;
-    valid[10][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[11])[row] = p ? (uint32_t)self->velocity.y.bits : 0;
-    valid[11][row] = p;
-    p = self->velocity_present;
-    ((uint32_t *)cols[12])[row] = p ? (uint32_t)self->velocity.z.bits : 0;
-    valid[12][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[13])[row] = p ? (uint8_t)self->velocity.data_valid : 0;
-    valid[13][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[14])[row] = p ? (uint8_t)self->velocity.sensor_id : 0;
-    valid[14][row] = p;
-    p = self->velocity_present;
-    ((uint8_t *)cols[15])[row] = p ? (uint8_t)self->velocity.reserved : 0;
-    valid[15][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[16])[row] = p ? (uint32_t)self->angular_rate.x.bits : 0;
-    valid[16][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[17])[row] = p ? (uint32_t)self->angular_rate.y.bits : 0;
-    valid[17][row] = p;
-    p = self->angular_rate_present;
-    ((uint32_t *)cols[18])[row] = p ? (uint32_t)self->angular_rate.z.bits : 0;
-    valid[18][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[19])[row] = p ? (uint64_t)self->position.latitude.bits : 0;
-    valid[19][row] = p;
-    p = self->position_present;
-    ((uint64_t *)cols[20])[row] = p ? (uint64_t)self->position.longitude.bits : 0;
-    valid[20][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[21])[row] = p ? (uint32_t)self->position.altitude.bits : 0;
-    valid[21][row] = p;
-    p = self->position_present;
-    ((uint32_t *)cols[22])[row] = p ? (uint32_t)self->position.height.bits : 0;
-    valid[22][row] = p;
-    p = self->position_present;
-    ((uint8_t *)cols[23])[row] = p ? (uint8_t)self->position.gps_health : 0;
-    valid[23][row] = p;
-    p = self->gps_detail_present;
-    ((uint32_t *)cols[24])[row] = p ? (uint32_t)self->gps_detail.date : 0;
-    valid[24][row] = p;
-    p = self->gps_detail_present;
-    ((uint32_t *)cols[25])[row] = p ? (uint32_t)self->gps_detail.time : 0;
-    valid[25][row] = p;
-    p = self->gps_detail_present;
-    ((int32_t *)cols[26])[row] = p ? (int32_t)self->gps_detail.longitude : 0;
-    valid[26][row] = p;
-    p = self->gps_detail_present;
-    ((int32_t *)cols[27])[row] = p ? (int32_t)self->gps_detail.latitude : 0;
-    valid[27][row] = p;
-    p = self->gps_detail_present;
-    ((int32_t *)cols[28])[row] = p ? (int32_t)self->gps_detail.height_msl : 0;
-    valid[28][row] = p;
-    p = self->gps_detail_present;
-    ((uint32_t *)cols[29])[row] = p ? (uint32_t)self->gps_detail.vel_n.bits : 0;
-    valid[29][row] = p;
-    p = self->gps_detail_present;
-    ((uint32_t *)cols[30])[row] = p ? (uint32_t)self->gps_detail.vel_e.bits : 0;
-    valid[30][row] = p;
-    p = self->gps_detail_present;
-    ((uint32_t *)cols[31])[row] = p ? (uint32_t)self->gps_detail.vel_d.bits : 0;
-    valid[31][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[32])[row] = p ? (uint32_t)self->rtk_detail.date : 0;
-    valid[32][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[33])[row] = p ? (uint32_t)self->rtk_detail.time : 0;
-    valid[33][row] = p;
-    p = self->rtk_detail_present;
-    ((uint64_t *)cols[34])[row] = p ? (uint64_t)self->rtk_detail.longitude.bits : 0;
-    valid[34][row] = p;
-    p = self->rtk_detail_present;
-    ((uint64_t *)cols[35])[row] = p ? (uint64_t)self->rtk_detail.latitude.bits : 0;
-    valid[35][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[36])[row] = p ? (uint32_t)self->rtk_detail.height_msl.bits : 0;
-    valid[36][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[37])[row] = p ? (uint32_t)self->rtk_detail.vel_n.bits : 0;
-    valid[37][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[38])[row] = p ? (uint32_t)self->rtk_detail.vel_e.bits : 0;
-    valid[38][row] = p;
-    p = self->rtk_detail_present;
-    ((uint32_t *)cols[39])[row] = p ? (uint32_t)self->rtk_detail.vel_d.bits : 0;
-    valid[39][row] = p;
-    p = self->rtk_detail_present;
-    ((int16_t *)cols[40])[row] = p ? (int16_t)self->rtk_detail.yaw : 0;
-    valid[40][row] = p;
-    p = self->rtk_detail_present;
-    ((uint8_t *)cols[41])[row] = p ? (uint8_t)self->rtk_detail.position_flag : 0;
-    valid[41][row] = p;
-    p = self->rtk_detail_present;
-    ((uint8_t *)cols[42])[row] = p ? (uint8_t)self->rtk_detail.yaw_flag : 0;
-    valid[42][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[43])[row] = p ? (int16_t)self->magnetometer.x : 0;
-    valid[43][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[44])[row] = p ? (int16_t)self->magnetometer.y : 0;
-    valid[44][row] = p;
-    p = self->magnetometer_present;
-    ((int16_t *)cols[45])[row] = p ? (int16_t)self->magnetometer.z : 0;
-    valid[45][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[46])[row] = p ? (int16_t)self->rc.roll : 0;
-    valid[46][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[47])[row] = p ? (int16_t)self->rc.pitch : 0;
-    valid[47][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[48])[row] = p ? (int16_t)self->rc.yaw : 0;
-    valid[48][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[49])[row] = p ? (int16_t)self->rc.throttle : 0;
-    valid[49][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[50])[row] = p ? (int16_t)self->rc.mode : 0;
-    valid[50][row] = p;
-    p = self->rc_present;
-    ((int16_t *)cols[51])[row] = p ? (int16_t)self->rc.gear : 0;
-    valid[51][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[52])[row] = p ? (uint32_t)self->gimbal.roll.bits : 0;
-    valid[52][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[53])[row] = p ? (uint32_t)self->gimbal.pitch.bits : 0;
-    valid[53][row] = p;
-    p = self->gimbal_present;
-    ((uint32_t *)cols[54])[row] = p ? (uint32_t)self->gimbal.yaw.bits : 0;
-    valid[54][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[55])[row] = p ? (uint8_t)self->gimbal.limit.pitch_limit : 0;
-    valid[55][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[56])[row] = p ? (uint8_t)self->gimbal.limit.roll_limit : 0;
-    valid[56][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[57])[row] = p ? (uint8_t)self->gimbal.limit.yaw_limit : 0;
-    valid[57][row] = p;
-    p = self->gimbal_present && self->gimbal.limit_present;
-    ((uint8_t *)cols[58])[row] = p ? (uint8_t)self->gimbal.limit.reserved : 0;
-    valid[58][row] = p;
+    osdk_broadcast_items_time_stamp_cols(&self->time_stamp, self->time_stamp_present, cols + 0, valid + 0, row);
+    osdk_broadcast_items_quaternion_cols(&self->quaternion, self->quaternion_present, cols + 3, valid + 3, row);
+    osdk_broadcast_items_vector3f_cols(&self->acceleration, self->acceleration_present, cols + 7, valid + 7, row);
+    osdk_broadcast_items_velocity_cols(&self->velocity, self->velocity_present, cols + 10, valid + 10, row);
+    osdk_broadcast_items_vector3f_cols(&self->angular_rate, self->angular_rate_present, cols + 16, valid + 16, row);
+    osdk_broadcast_items_position_cols(&self->position, self->position_present, cols + 19, valid + 19, row);
+    osdk_broadcast_items_gps_detail_cols(&self->gps_detail, self->gps_detail_present, cols + 24, valid + 24, row);
+    osdk_broadcast_items_rtk_detail_cols(&self->rtk_detail, self->rtk_detail_present, cols + 32, valid + 32, row);
+    osdk_broadcast_items_magnetometer_cols(&self->magnetometer, self->magnetometer_present, cols + 43, valid + 43, row);
+    osdk_broadcast_items_rc_cols(&self->rc, self->rc_present, cols + 46, valid + 46, row);
+    osdk_broadcast_items_gimbal_cols(&self->gimbal, self->gimbal_present, cols + 52, valid + 52, row);
     p = self->flight_status_present;
     ((uint8_t *)cols[59])[row] = p ? (uint8_t)self->flight_status : 0;
     valid[59][row] = p;
     p = self->battery_present;
     ((uint8_t *)cols[60])[row] = p ? (uint8_t)self->battery : 0;
     valid[60][row] = p;
-    p = self->control_info_present && self->control_info.cur_mov_control_mode_present;
-    ((uint8_t *)cols[61])[row] = p ? (uint8_t)self->control_info.cur_mov_control_mode : 0;
-    valid[61][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[62])[row] = p ? (uint8_t)self->control_info.control_device : 0;
-    valid[62][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[63])[row] = p ? (uint8_t)self->control_info.onboard_requested : 0;
-    valid[63][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[64])[row] = p ? (uint8_t)self->control_info.virtual_rc : 0;
-    valid[64][row] = p;
-    p = self->control_info_present;
-    ((uint8_t *)cols[65])[row] = p ? (uint8_t)self->control_info.reserved : 0;
-    valid[65][row] = p;
+    osdk_broadcast_items_control_info_cols(&self->control_info, self->control_info_present, cols + 61, valid + 61, row);
 }
 
 const osdk_column_set_t *osdk_broadcast_columns(uint8_t profile)

@@ -524,6 +524,24 @@ static PyObject *Columns_schema(Columns *self, PyObject *Py_UNUSED(ignored))
     return out;
 }
 
+/* Empty arrays for the next rows (those taken, if any, belong to Python now) and
+ * counts from zero. 0, or -1 with a Python exception set. */
+static int columns_fresh(Columns *self)
+{
+    size_t i;
+    for (i = 0; i < self->set->count; i++) {
+        if ((self->data[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
+            (self->valid[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
+            return -1;
+    }
+    if ((self->offsets = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
+        (self->times = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
+        return -1;
+    self->rows = self->cap = 0;
+    memset(self->counts, 0, sizeof self->counts);
+    return 0;
+}
+
 /* Hands the filled arrays over, cut to the rows made, and starts a new set. */
 static PyObject *Columns_take(Columns *self, PyObject *Py_UNUSED(ignored))
 {
@@ -562,19 +580,10 @@ static PyObject *Columns_take(Columns *self, PyObject *Py_UNUSED(ignored))
     Py_CLEAR(self->offsets);
     Py_CLEAR(self->times);
     /* a fresh set of empty arrays; the stream (deframer) goes on */
-    for (i = 0; i < n; i++) {
-        if ((self->data[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
-            (self->valid[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL) {
-            self->failed = true;
-            break;
-        }
+    if (columns_fresh(self) < 0) {
+        self->failed = true;
+        Py_CLEAR(out);
     }
-    self->offsets = PyByteArray_FromStringAndSize(NULL, 0);
-    self->times = PyByteArray_FromStringAndSize(NULL, 0);
-    if (self->offsets == NULL || self->times == NULL) self->failed = true;
-    self->rows = self->cap = 0;
-    memset(self->counts, 0, sizeof self->counts);
-    if (self->failed) Py_CLEAR(out);
 done:
     Py_XDECREF(data);
     Py_XDECREF(valid);
@@ -607,7 +616,7 @@ static int Columns_init(Columns *self, PyObject *args, PyObject *kwargs)
     static char *kwlist[] = {"profile", NULL};
     unsigned char profile;
     const osdk_column_set_t *set;
-    size_t i, n;
+    size_t n;
     if (!PyArg_ParseTupleAndKeywords(args, kwargs, "b:Columns", kwlist, &profile)) return -1;
     if (self->busy) {
         PyErr_SetString(PyExc_RuntimeError, "these Columns are being filled");
@@ -629,19 +638,10 @@ static int Columns_init(Columns *self, PyObject *args, PyObject *kwargs)
         PyErr_NoMemory();
         return -1;
     }
-    for (i = 0; i < n; i++) {
-        if ((self->data[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
-            (self->valid[i] = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
-            return -1;
-    }
-    if ((self->offsets = PyByteArray_FromStringAndSize(NULL, 0)) == NULL ||
-        (self->times = PyByteArray_FromStringAndSize(NULL, 0)) == NULL)
-        return -1;
+    if (columns_fresh(self) < 0) return -1;
     self->profile = profile;
-    self->rows = self->cap = 0;
     self->now = NO_TIME;
     self->failed = false;
-    memset(self->counts, 0, sizeof self->counts);
     osdk_deframer_init(&self->deframer, self->window, sizeof self->window);
     return 0;
 }

@@ -1055,7 +1055,8 @@ class Generator:
         bt, sw = self.broadcast_switch()
         profile_enum = next(p.enum for p in bt.params if p.id == sw.switch_on)
         value_of = {name: value for value, name in profile_enum.values}
-        h, c = Lines(), Lines()
+        h, c, items_c = Lines(), Lines(), Lines()
+        item_types: dict[str, str] = {}
         by_profile: list[tuple[int, str, TypeSpec]] = []
         for case in sw.cases:
             key = str(case.key)
@@ -1077,12 +1078,25 @@ class Generator:
             c(f"static const osdk_column_set_t {t.cname}_column_set = "
               f"{{{t.cname}_columns, {len(leaves)}, {t.cname}_items, {len(items)}}};")
             c()
+            # an item's leaves are written by one function per item type, which the profiles share
             c.func(f"static void {t.cname}_row(const {t.cname}_t *self, void *const *cols, uint8_t *const *valid, size_t row)")
-            c("bool p;")
-            for i, leaf in enumerate(leaves):
-                c(f"p = {leaf['present']};")
-                c(f"(({leaf['ctype']} *)cols[{i}])[row] = p ? ({leaf['ctype']}){leaf['value']} : 0;")
-                c(f"valid[{i}][row] = p;")
+            fields = {f.id: f for f in t.fields}
+            if any(fields[item].kind != "struct" for item in items):
+                c("bool p;")
+            base = 0
+            for item in items:
+                mine = [leaf for leaf in leaves if leaf["item"] == item]
+                f = fields[item]
+                if f.kind == "struct":
+                    target = f.ref.target
+                    if target.cname not in item_types:
+                        item_types[target.cname] = self.item_columns(target, item)
+                        items_c(item_types[target.cname])
+                    present = f"self->{self.present(f.id)}" if f.cond is not None else "true"
+                    c(f"{target.cname}_cols(&self->{f.id}, {present}, cols + {base}, valid + {base}, row);")
+                else:
+                    self.column_writes(c, mine, base)
+                base += len(mine)
             c.close()
             c()
         c.func("const osdk_column_set_t *osdk_broadcast_columns(uint8_t profile)")
@@ -1107,7 +1121,27 @@ class Generator:
         h(" * column i's array of its element type, valid[i] its presence bytes (1 present, 0")
         h(" * absent; an absent value is written as 0). False when `b` holds no layout. */")
         h(f"bool osdk_broadcast_row(const {bt.cname}_t *b, void *const *cols, uint8_t *const *valid, size_t row);")
-        return h.text(), c.text()
+        return h.text(), items_c.text() + c.text()
+
+    @staticmethod
+    def column_writes(c: Lines, leaves: list[dict], base: int) -> None:
+        for i, leaf in enumerate(leaves, base):
+            c(f"p = {leaf['present']};")
+            c(f"(({leaf['ctype']} *)cols[{i}])[row] = p ? ({leaf['ctype']}){leaf['value']} : 0;")
+            c(f"valid[{i}][row] = p;")
+
+    def item_columns(self, t: TypeSpec, item: str) -> str:
+        """`<type>_cols()`: the leaves of an item type from cols[0] on, present where `present` and their own `if` say."""
+        leaves: list[dict] = []
+        self.column_leaves(t, "self->", "", ["present"], item, leaves)
+        c = Lines()
+        c(f"/* {t.ksy_name}: its leaves, in the columns from cols[0] on */")
+        c.func(f"static void {t.cname}_cols(const {t.cname}_t *self, bool present, void *const *cols, "
+               f"uint8_t *const *valid, size_t row)")
+        c("bool p;")
+        self.column_writes(c, leaves, 0)
+        c.close()
+        return c.text()
 
     def render_python(self) -> dict[str, str]:
         """The files of generated/cpython/: the value model as Python objects."""
