@@ -22,14 +22,13 @@ from osdk_conformance.flight import extra, live, output
 from osdk_conformance.reference import decode as json_lines
 
 FORMATS = ("jsonl", "csv", "parquet")
-DEFAULT_BAUD = 230400
 
 
 def add_arguments(d: argparse.ArgumentParser, profiles: Sequence[str]) -> None:
     sources = json_lines.add_arguments(d, profiles)
     sources.add_argument("--port", help="decode a serial port as the bytes arrive (a path or a pyserial URL), until "
                                         "Ctrl-C")
-    d.add_argument("--baud", type=baud_rate, default=DEFAULT_BAUD, help=f"with --port: the baud rate ({DEFAULT_BAUD})")
+    d.add_argument("--baud", type=baud_rate, default=live.DEFAULT_BAUD, help=f"with --port: the baud rate ({live.DEFAULT_BAUD})")
     d.add_argument("--follow", action="store_true",
                    help="with FILE: keep reading as the file grows (a capture being written), until Ctrl-C")
     d.add_argument("--format", choices=FORMATS, default="jsonl",

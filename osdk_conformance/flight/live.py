@@ -19,6 +19,7 @@ import serial
 from osdk_conformance.core.errors import UsageError, cannot_read, one_line
 from osdk_conformance.reference.decode import timed_pieces
 
+DEFAULT_BAUD = 230400   # osdkc device's default too
 POLL_S = 0.1        # how often a quiet port or file is looked at again
 READ_MAX = 65536
 

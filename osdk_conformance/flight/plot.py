@@ -29,10 +29,8 @@ from osdk_conformance.device.plots import MAX_POINTS, Panel, small_multiples
 from osdk_conformance.flight.columns import FlightData
 from osdk_conformance.flight.records import attitude_of
 
-DEFAULT_ITEMS = ("battery", "attitude", "velocity")
 UNITS = {"battery": "%", "velocity": "m/s", "acceleration": "m/s²", "angular_rate": "rad/s",
          "position.altitude": "m", "position.height": "m", "gimbal": "deg"}
-DERIVED = ("attitude",)
 
 
 def _axis(data: FlightData) -> tuple[np.ndarray, str]:

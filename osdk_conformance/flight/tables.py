@@ -30,7 +30,6 @@ import pyarrow.parquet as pa_parquet
 from osdk_conformance.flight.columns import NO_TIME, Column, FlightData
 from osdk_conformance.flight.records import int_enum
 
-FORMATS = ("csv", "parquet")  # besides jsonl, the value model's events (reference/decode.py)
 
 ARROW_TYPES = {"bool": pa.bool_(), "u8": pa.uint8(), "u16": pa.uint16(), "u32": pa.uint32(), "u64": pa.uint64(),
                "i8": pa.int8(), "i16": pa.int16(), "i32": pa.int32(), "i64": pa.int64(),
